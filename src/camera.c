@@ -1,0 +1,39 @@
+/* camera.c - NFF's view: from, at, up (not necessarily perpendicular) and the angle.
+ * `angle` spans the image width; pixels are square, so the height follows.
+ * See LICENSE for copyright and licence. */
+#include "camera.h"
+
+#define DEGREES_TO_RADIANS REAL_C(0.017453292519943295)
+
+int camera_init(camera *c, const view *v, int width, int height)
+{
+	vec3 forward = vec_sub(v->at, v->from);
+	vec3 right;
+	if (!(vec_dot(forward, forward) > REAL_C(0.0)))
+		return 0;
+	c->forward = vec_normalize(forward);
+	/* Orthonormalise: right = forward x up, then the true up = right x forward. */
+	right = vec_cross(c->forward, vec_normalize(v->up));
+	if (!(vec_length(right) > REAL_C(1e-9)))
+		return 0;
+	c->right = vec_normalize(right);
+	c->up = vec_cross(c->right, c->forward);
+	c->eye = v->from;
+	c->half_width = real_tan(real_mul(real_mul(v->angle, REAL_C(0.5)), DEGREES_TO_RADIANS));
+	c->pixel = real_div(real_mul(REAL_C(2.0), c->half_width), real_from_int(width));
+	c->width = width;
+	c->height = height;
+	return 1;
+}
+
+ray camera_ray(const camera *c, real x, real y)
+{
+	/* Image-plane offsets at unit distance; y grows downwards in the image. */
+	real u = real_mul(x, c->pixel) - c->half_width;
+	real v = real_mul(real_from_int(c->height), real_mul(REAL_C(0.5), c->pixel)) -
+		 real_mul(y, c->pixel);
+	ray r;
+	r.origin = c->eye;
+	r.dir = vec_normalize(vec_madd(vec_madd(c->forward, u, c->right), v, c->up));
+	return r;
+}

@@ -1,0 +1,24 @@
+/* camera.h - the pinhole camera: pixel coordinates to eye rays.
+ * See LICENSE for copyright and licence. */
+#ifndef RT_CAMERA_H
+#define RT_CAMERA_H
+
+#include "shape.h"
+
+typedef struct {
+	vec3 eye;
+	vec3 forward, right, up; /* orthonormal, right-handed as NFF is */
+	real half_width;         /* tan(angle / 2): half the image plane at unit distance */
+	real pixel;              /* size of one pixel on that plane */
+	int width, height;
+} camera;
+
+/* Sets up the camera for a width x height image. Returns 0 when the view is degenerate
+ * (from = at, or up parallel to the view direction). */
+int camera_init(camera *c, const view *v, int width, int height);
+
+/* The eye ray through image position (x, y), in pixels from the top-left corner:
+ * (i + 0.5, j + 0.5) is the centre of pixel (i, j), (i, j) its top-left corner. */
+ray camera_ray(const camera *c, real x, real y);
+
+#endif

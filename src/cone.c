@@ -1,0 +1,53 @@
+/* cone.c - ray/uncapped cone or cylinder intersection (NFF c).
+ * In the cone's frame a point p lies on the surface when its distance from the axis
+ * equals r(h) = base_radius + slope * h, with h its height along the axis in [0, length].
+ * See LICENSE for copyright and licence. */
+#include "shape.h"
+
+int cone_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h)
+{
+	const cone_shape *c = &o->u.cone;
+	vec3 f = vec_sub(r->origin, c->base);
+	real oh = vec_dot(f, c->axis), dh = vec_dot(r->dir, c->axis);
+	/* Components of origin and direction perpendicular to the axis. */
+	vec3 fp = vec_madd(f, -oh, c->axis);
+	vec3 dp = vec_madd(r->dir, -dh, c->axis);
+	real radius_at_origin = c->base_radius + real_mul(c->slope, oh);
+	real slope_dh = real_mul(c->slope, dh);
+	/* |fp + t dp|^2 = (radius_at_origin + slope dh t)^2, as a t^2 + 2 b t + cc = 0. */
+	real a = vec_dot(dp, dp) - real_mul(slope_dh, slope_dh);
+	real b = vec_dot(fp, dp) - real_mul(radius_at_origin, slope_dh);
+	real cc = vec_dot(fp, fp) - real_mul(radius_at_origin, radius_at_origin);
+	real roots[2];
+	int i;
+
+	if (!solve_quadratic(a, b, cc, real_mul(b, b) - real_mul(a, cc), &roots[0], &roots[1]))
+		return 0;
+	for (i = 0; i < 2; i++) {
+		real t = roots[i], height;
+		vec3 p, radial, normal;
+		if (!(t > tmin && t < tmax))
+			continue;
+		height = oh + real_mul(t, dh);
+		/* The quadric is a double cone: keep the part between the two end circles. */
+		if (height < REAL_C(0.0) || height > c->length)
+			continue;
+		p = vec_madd(r->origin, t, r->dir);
+		radial = vec_madd(vec_sub(p, c->base), -height, c->axis);
+		/* Gradient of |radial|^2 - r(h)^2, halved: outward on the side wall. */
+		normal = vec_madd(radial, -real_mul(c->base_radius + real_mul(c->slope, height),
+						    c->slope),
+				  c->axis);
+		normal = vec_normalize(normal);
+		if ((o->flags & OBJ_INSIDE_ONLY) && vec_dot(normal, r->dir) < REAL_C(0.0))
+			continue;
+		if (h) {
+			h->t = t;
+			h->point = p;
+			h->normal = normal;
+			h->shading = normal;
+		}
+		return 1;
+	}
+	return 0;
+}

@@ -1,0 +1,55 @@
+/* config.h - rt's static capacities and compile-time limits.
+ * Every array in rt is sized here; nothing is allocated at run time.
+ * See LICENSE for copyright and licence. */
+#ifndef RT_CONFIG_H
+#define RT_CONFIG_H
+
+/* Each capacity may be overridden with -DNAME=value (the MCU build shrinks them).
+ * Exceeding one at run time is a clear error that names the macro to raise. */
+#ifndef RT_MAX_OBJECTS
+#define RT_MAX_OBJECTS 16384 /* primitives in a scene (SPD standard scenes need < 10,000) */
+#endif
+#ifndef RT_MAX_LIGHTS
+#define RT_MAX_LIGHTS 64 /* point lights */
+#endif
+#ifndef RT_MAX_MATERIALS
+#define RT_MAX_MATERIALS 1024 /* distinct `f` materials (repeats share one slot) */
+#endif
+#ifndef RT_MAX_VERTICES
+#define RT_MAX_VERTICES 65536 /* polygon and patch vertices, all polygons together */
+#endif
+#ifndef RT_MAX_POLY_VERTS
+#define RT_MAX_POLY_VERTS 1024 /* vertices of one polygon (SPD gears needs 144) */
+#endif
+#ifndef RT_MAX_PLANES
+#define RT_MAX_PLANES 4096 /* bounding planes, all polyhedra together */
+#endif
+#ifndef RT_MAX_HEDRON_PLANES
+#define RT_MAX_HEDRON_PLANES 64 /* planes of one polyhedron */
+#endif
+#ifndef RT_MAX_WIDTH
+#define RT_MAX_WIDTH 8192 /* image width in pixels (row buffers are this wide) */
+#endif
+#ifndef RT_MAX_HEIGHT
+#define RT_MAX_HEIGHT 8192 /* image height in pixels */
+#endif
+#ifndef RT_MAX_DEPTH
+#define RT_MAX_DEPTH 8 /* ray tree levels, eye ray = level 1; bounds the recursion */
+#endif
+#ifndef RT_MAX_MEDIA
+#define RT_MAX_MEDIA 8 /* nested transmitting objects a ray can be inside at once */
+#endif
+#ifndef RT_TOKEN_MAX
+#define RT_TOKEN_MAX 64 /* longest token in a scene file, in bytes */
+#endif
+
+#define RT_DEFAULT_DEPTH 5 /* SPD's testing procedure uses 5 levels */
+
+/* Compile-time check (C99 has no static_assert): a negative array size fails to compile. */
+/* Turns a macro's value into a string literal. */
+#define RT_STRINGIFY_(x) #x
+#define RT_STRINGIFY(x) RT_STRINGIFY_(x)
+
+#define RT_STATIC_ASSERT(name, cond) typedef char rt_assert_##name[(cond) ? 1 : -1]
+
+#endif

@@ -1,0 +1,70 @@
+/* diag.c - formats errors and warnings and hands them to the sink.
+ * See LICENSE for copyright and licence. */
+#include "diag.h"
+
+#include <stdio.h>
+
+static void stderr_sink(void *ctx, const char *message)
+{
+	(void)ctx;
+	fputs(message, stderr);
+}
+
+static diag_sink_fn current_sink = stderr_sink;
+static void *current_ctx;
+
+void diag_set_sink(diag_sink_fn sink, void *ctx)
+{
+	current_sink = sink ? sink : stderr_sink;
+	current_ctx = ctx;
+}
+
+/* Appends to a message buffer, never past its end (one byte is kept for the newline). */
+static size_t append(char *buf, size_t size, size_t used, const char *fmt, ...)
+{
+	va_list ap;
+	int n;
+	if (used + 2 >= size)
+		return used;
+	va_start(ap, fmt);
+	n = vsnprintf(buf + used, size - used - 1, fmt, ap);
+	va_end(ap);
+	if (n < 0)
+		return used;
+	used += (size_t)n;
+	return used + 2 >= size ? size - 2 : used;
+}
+
+static void emit(const char *file, int line, const char *kind, const char *fmt, va_list ap)
+{
+	char message[512];
+	size_t used = append(message, sizeof message, 0, "rt: ");
+	int n;
+	if (file && line > 0)
+		used = append(message, sizeof message, used, "%s:%d: ", file, line);
+	else if (file)
+		used = append(message, sizeof message, used, "%s: ", file);
+	used = append(message, sizeof message, used, "%s", kind);
+	n = vsnprintf(message + used, sizeof message - used - 1, fmt, ap);
+	if (n > 0)
+		used = used + (size_t)n + 2 >= sizeof message ? sizeof message - 2 : used + (size_t)n;
+	message[used] = '\n';
+	message[used + 1] = '\0';
+	current_sink(current_ctx, message);
+}
+
+void diag_error(const char *file, int line, const char *fmt, ...)
+{
+	va_list ap;
+	va_start(ap, fmt);
+	emit(file, line, "", fmt, ap);
+	va_end(ap);
+}
+
+void diag_warning(const char *file, int line, const char *fmt, ...)
+{
+	va_list ap;
+	va_start(ap, fmt);
+	emit(file, line, "warning: ", fmt, ap);
+	va_end(ap);
+}

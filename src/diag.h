@@ -1,0 +1,24 @@
+/* diag.h - the one path for messages to the user: errors and warnings.
+ * Messages read `rt: FILE:LINE: what is wrong`; nothing here exits the process.
+ * See LICENSE for copyright and licence. */
+#ifndef RT_DIAG_H
+#define RT_DIAG_H
+
+#include <stdarg.h>
+
+/* Where messages go; stderr unless a test captures them. */
+typedef void (*diag_sink_fn)(void *ctx, const char *message);
+void diag_set_sink(diag_sink_fn sink, void *ctx);
+
+#if defined(__GNUC__)
+#define RT_PRINTF(f, a) __attribute__((format(printf, f, a)))
+#else
+#define RT_PRINTF(f, a)
+#endif
+
+/* `rt: FILE:LINE: message` (FILE:LINE: left out when file is NULL, LINE when line <= 0). */
+void diag_error(const char *file, int line, const char *fmt, ...) RT_PRINTF(3, 4);
+/* `rt: FILE:LINE: warning: message` */
+void diag_warning(const char *file, int line, const char *fmt, ...) RT_PRINTF(3, 4);
+
+#endif

@@ -1,0 +1,73 @@
+/* image.c - sRGB encoding and PPM headers.
+ * Colours are linear while tracing; each channel is clamped to [0, 1] and encoded with
+ * the sRGB transfer curve, the usual meaning of PPM samples in practice. Scene colours
+ * come in as sRGB and are decoded once at load, so `b 0.5 0.5 0.5` shows as 50% grey.
+ * See LICENSE for copyright and licence. */
+#include "image.h"
+
+#include <stdio.h>
+
+/* Linear value at which each 8-bit code starts: decode((code - 0.5) / 255) for
+ * code = 1..255. Filled once; a binary search then encodes without pow per pixel. */
+static real thresholds[256];
+static int thresholds_ready;
+
+static double srgb_decode(double v)
+{
+	return v <= 0.04045 ? v / 12.92 : pow((v + 0.055) / 1.055, 2.4);
+}
+
+static void init_thresholds(void)
+{
+	int code;
+	thresholds[0] = REAL_C(0.0);
+	for (code = 1; code < 256; code++)
+		thresholds[code] = (real)srgb_decode((code - 0.5) / 255.0);
+	thresholds_ready = 1;
+}
+
+static real decode_channel(real v)
+{
+	return v <= REAL_C(0.0) ? REAL_C(0.0) : v >= REAL_C(1.0) ? v : (real)srgb_decode((double)v);
+}
+
+vec3 image_srgb_to_linear(vec3 srgb)
+{
+	return vec_make(decode_channel(srgb.x), decode_channel(srgb.y), decode_channel(srgb.z));
+}
+
+unsigned char image_srgb_byte(real linear)
+{
+	int lo = 0, hi = 255;
+	if (!thresholds_ready)
+		init_thresholds();
+	/* NaN fails every comparison and lands on 0, as do negatives. */
+	if (!(linear > REAL_C(0.0)))
+		return 0;
+	/* Largest code whose threshold is <= linear. */
+	while (lo < hi) {
+		int mid = (lo + hi + 1) / 2;
+		if (thresholds[mid] <= linear)
+			lo = mid;
+		else
+			hi = mid - 1;
+	}
+	return (unsigned char)lo;
+}
+
+void image_encode_row(const vec3 *colors, int count, unsigned char *bytes)
+{
+	int i;
+	for (i = 0; i < count; i++) {
+		bytes[3 * i + 0] = image_srgb_byte(colors[i].x);
+		bytes[3 * i + 1] = image_srgb_byte(colors[i].y);
+		bytes[3 * i + 2] = image_srgb_byte(colors[i].z);
+	}
+}
+
+int ppm_write_header(write_fn write, void *ctx, int width, int height)
+{
+	char header[64];
+	int n = snprintf(header, sizeof header, "P6\n%d %d\n255\n", width, height);
+	return n > 0 && write(ctx, header, (size_t)n);
+}

@@ -1,0 +1,67 @@
+/* intersect.c - nearest-hit and shadow queries over all objects of a scene.
+ * This is also where normals are turned to face the ray, in one place for every shape.
+ * See LICENSE for copyright and licence. */
+#include "intersect.h"
+
+int object_intersect(const scene *s, int index, const ray *r, real tmin, real tmax, hit *h)
+{
+	const object *o = &s->objects[index];
+	switch (o->kind) {
+	case SHAPE_SPHERE:
+		return sphere_intersect(o, r, tmin, tmax, h);
+	case SHAPE_POLYGON:
+	case SHAPE_PATCH:
+		return polygon_intersect(s, o, r, tmin, tmax, h);
+	case SHAPE_CONE:
+		return cone_intersect(o, r, tmin, tmax, h);
+	case SHAPE_HEDRON:
+		return hedron_intersect(s, o, r, tmin, tmax, h);
+	case SHAPE_PLANE:
+		return plane_intersect(o, r, tmin, tmax, h);
+	default:
+		return 0;
+	}
+}
+
+/* Turns the geometric normal against the ray and the shading normal to the same side
+ * (SPD's teapot has patches whose vertex normals oppose the face). */
+static void face_forward(const ray *r, hit *h)
+{
+	h->front = vec_dot(h->normal, r->dir) < REAL_C(0.0);
+	if (!h->front)
+		h->normal = vec_neg(h->normal);
+	if (vec_dot(h->shading, h->normal) < REAL_C(0.0))
+		h->shading = vec_neg(h->shading);
+}
+
+int scene_intersect(const scene *s, const ray *r, real tmax, hit *h)
+{
+	int i, found = 0;
+	for (i = 0; i < s->object_count; i++) {
+		/* Each hit shrinks tmax, so later objects only report nearer hits. */
+		if (object_intersect(s, i, r, REAL_C(0.0), tmax, h)) {
+			tmax = h->t;
+			h->object = i;
+			found = 1;
+		}
+	}
+	if (found)
+		face_forward(r, h);
+	return found;
+}
+
+real scene_transmittance(const scene *s, const ray *r, real tmax)
+{
+	real pass = REAL_C(1.0);
+	int i;
+	for (i = 0; i < s->object_count; i++) {
+		if (object_intersect(s, i, r, REAL_C(0.0), tmax, NULL)) {
+			real kt = s->materials[s->objects[i].material].kt;
+			/* Stop at the first opaque blocker: nothing else can change the answer. */
+			if (kt <= REAL_C(0.0))
+				return REAL_C(0.0);
+			pass = real_mul(pass, kt);
+		}
+	}
+	return pass;
+}

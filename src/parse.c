@@ -1,0 +1,765 @@
+/* parse.c - reads NFF (and rt's extensions) as a stream of tokens into a scene.
+ * One lexer, one function per entity; every error names the file and line and says
+ * what was expected. The grammar is documented in docs/scene.md.
+ * See LICENSE for copyright and licence. */
+#include "parse.h"
+
+#include <errno.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "diag.h"
+#include "image.h"
+
+/* ---- lexer --------------------------------------------------------------------- */
+
+#define NO_BYTE (-2) /* nothing pushed back */
+
+typedef struct {
+	read_fn read;
+	void *ctx;
+	const char *file;
+	int line;     /* line of the next byte */
+	int pending;  /* a byte read ahead, or NO_BYTE */
+	int at_start; /* nothing read yet: a byte-order mark may follow */
+	char tok[RT_TOKEN_MAX + 1];
+	int tok_line;  /* line of the current token */
+	int pushed;    /* the current token was given back and comes again */
+	int have_tok;  /* tok holds a token (not end of input) */
+	int failed;    /* an error was reported */
+} lexer;
+
+static int next_byte(lexer *lx)
+{
+	int c;
+	if (lx->pending != NO_BYTE) {
+		c = lx->pending;
+		lx->pending = NO_BYTE;
+	} else {
+		c = lx->read(lx->ctx);
+	}
+	if (c == '\n')
+		lx->line++;
+	return c;
+}
+
+/* Reports the first error only (later ones would be consequences) and returns 0. */
+static int fail(lexer *lx, int line, const char *fmt, ...) RT_PRINTF(3, 4);
+static int fail(lexer *lx, int line, const char *fmt, ...)
+{
+	char message[384];
+	va_list ap;
+	if (!lx->failed) {
+		va_start(ap, fmt);
+		vsnprintf(message, sizeof message, fmt, ap);
+		va_end(ap);
+		diag_error(lx->file, line, "%s", message);
+	}
+	lx->failed = 1;
+	return 0;
+}
+
+static int is_space(int c)
+{
+	return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v';
+}
+
+/* A byte-order mark at the start: UTF-8's is skipped, UTF-16's is refused. */
+static int check_start(lexer *lx)
+{
+	int c = next_byte(lx), d;
+	lx->at_start = 0;
+	if (c == 0xFF || c == 0xFE) {
+		d = next_byte(lx);
+		if ((c == 0xFF && d == 0xFE) || (c == 0xFE && d == 0xFF))
+			return fail(lx, 1, "the file is UTF-16 text; save it as ASCII or UTF-8");
+		lx->pending = d;
+	} else if (c == 0xEF) {
+		if (next_byte(lx) == 0xBB && next_byte(lx) == 0xBF)
+			return 1;
+		return fail(lx, 1, "unexpected bytes at the start of the file");
+	}
+	lx->pending = c;
+	return 1;
+}
+
+/* Reads the next token into lx->tok. Returns 1 for a token, 0 at the end of input or
+ * after an error (lx->failed tells which). */
+static int next_token(lexer *lx)
+{
+	int c, n = 0;
+	if (lx->pushed) {
+		lx->pushed = 0;
+		return lx->have_tok;
+	}
+	if (lx->at_start && !check_start(lx))
+		return lx->have_tok = 0;
+	for (;;) {
+		c = next_byte(lx);
+		if (c == '#') {
+			/* A comment runs to the end of the line, whatever bytes it holds. */
+			while (c != '\n' && c >= 0)
+				c = next_byte(lx);
+		}
+		if (c < 0) {
+			lx->tok[0] = '\0';
+			lx->tok_line = lx->line;
+			return lx->have_tok = 0;
+		}
+		if (!is_space(c))
+			break;
+	}
+	lx->tok_line = lx->line;
+	while (c >= 0 && !is_space(c) && c != '#') {
+		if (c < 0x21 || c > 0x7E) {
+			char shown[16];
+			snprintf(shown, sizeof shown, "0x%02X", (unsigned)c);
+			fail(lx, lx->line, "unexpected byte %s (this is not a text scene file)",
+			     shown);
+			return lx->have_tok = 0;
+		}
+		if (n == RT_TOKEN_MAX) {
+			lx->tok[n] = '\0';
+			fail(lx, lx->tok_line, "token too long (over %d bytes): '%.16s...'",
+			     RT_TOKEN_MAX, lx->tok);
+			return lx->have_tok = 0;
+		}
+		lx->tok[n++] = (char)c;
+		c = next_byte(lx);
+	}
+	lx->tok[n] = '\0';
+	if (c >= 0) {
+		/* Give the delimiter back; its newline is counted again when reread. */
+		if (c == '\n')
+			lx->line--;
+		lx->pending = c;
+	}
+	return lx->have_tok = 1;
+}
+
+static void push_back(lexer *lx) { lx->pushed = 1; }
+
+/* ---- numbers ------------------------------------------------------------------- */
+
+/* Reads one finite number; `what` names it in messages ("sphere radius"). */
+static int read_number(lexer *lx, const char *what, real *out)
+{
+	char *end;
+	if (!next_token(lx)) {
+		if (lx->failed)
+			return 0;
+		return fail(lx, lx->tok_line, "unexpected end of file (expected %s)", what);
+	}
+	errno = 0;
+	*out = real_parse(lx->tok, &end);
+	if (end == lx->tok || *end != '\0')
+		return fail(lx, lx->tok_line, "expected %s, got '%s'", what, lx->tok);
+	/* Underflow to a tiny value is harmless; overflow, NaN and infinity are not. */
+	if (!real_isfinite(*out))
+		return fail(lx, lx->tok_line, "expected %s, got '%s' (not a finite number)", what,
+			    lx->tok);
+	return 1;
+}
+
+static int read_vec(lexer *lx, const char *what, vec3 *out)
+{
+	return read_number(lx, what, &out->x) && read_number(lx, what, &out->y) &&
+	       read_number(lx, what, &out->z);
+}
+
+/* Reads a whole number in [lo, hi]; `limit` names the capacity macro behind hi, if any. */
+static int read_count(lexer *lx, const char *what, long lo, long hi, const char *limit,
+		      long *out)
+{
+	char *end;
+	if (!next_token(lx)) {
+		if (lx->failed)
+			return 0;
+		return fail(lx, lx->tok_line, "unexpected end of file (expected %s)", what);
+	}
+	errno = 0;
+	*out = strtol(lx->tok, &end, 10);
+	if (end == lx->tok || *end != '\0')
+		return fail(lx, lx->tok_line, "expected %s (a whole number), got '%s'", what,
+			    lx->tok);
+	if (limit && *out > hi)
+		return fail(lx, lx->tok_line,
+			    "%s %s is over the limit %s = %ld (raise it in src/config.h)", what,
+			    lx->tok, limit, hi);
+	if (errno == ERANGE || *out < lo || *out > hi)
+		return fail(lx, lx->tok_line, "%s must be %ld to %ld, got %s", what, lo, hi,
+			    lx->tok);
+	return 1;
+}
+
+/* ---- scene building ------------------------------------------------------------ */
+
+typedef struct {
+	lexer lx;
+	scene *s;
+	int material;     /* current material index, -1 before the first `f` */
+	real absorb;      /* absorption for the next `f` */
+	int view_line;    /* line of `v`, 0 if none yet */
+	int unlit_lights; /* lights given without a colour */
+	int light_has_color[RT_MAX_LIGHTS];
+} parser;
+
+static int capacity_error(parser *p, const char *what, const char *limit)
+{
+	return fail(&p->lx, p->lx.tok_line, "too many %s: the limit is %s (raise it in src/config.h)",
+		    what, limit);
+}
+
+/* Index of material m, adding it unless an identical one exists. */
+static int intern_material(parser *p, const material *m)
+{
+	scene *s = p->s;
+	int i;
+	for (i = 0; i < s->material_count; i++)
+		if (memcmp(&s->materials[i], m, sizeof *m) == 0)
+			return i;
+	if (s->material_count == RT_MAX_MATERIALS)
+		return capacity_error(p, "materials", "RT_MAX_MATERIALS"), -1;
+	s->materials[s->material_count] = *m;
+	return s->material_count++;
+}
+
+/* A new object slot with the current material (white diffuse before any `f`). */
+static object *new_object(parser *p, unsigned char kind)
+{
+	scene *s = p->s;
+	object *o;
+	if (p->material < 0) {
+		material white;
+		memset(&white, 0, sizeof white);
+		white.color = vec_make(REAL_C(1.0), REAL_C(1.0), REAL_C(1.0));
+		white.kd = REAL_C(1.0);
+		white.ior = REAL_C(1.0);
+		p->material = intern_material(p, &white);
+		if (p->material < 0)
+			return NULL;
+	}
+	if (s->object_count == RT_MAX_OBJECTS) {
+		capacity_error(p, "objects", "RT_MAX_OBJECTS");
+		return NULL;
+	}
+	o = &s->objects[s->object_count];
+	memset(o, 0, sizeof *o);
+	o->kind = kind;
+	o->material = (unsigned short)p->material;
+	o->line = p->lx.tok_line;
+	/* Opaque polygons are one-sided (NFF); closed solids, cones, patches and anything
+	 * that transmits are seen from both sides. */
+	if (!(kind == SHAPE_POLYGON && s->materials[p->material].kt <= REAL_C(0.0)))
+		o->flags |= OBJ_TWO_SIDED;
+	return o;
+}
+
+static void warn(parser *p, int line, const char *what)
+{
+	diag_warning(p->lx.file, line, "%s; skipped", what);
+}
+
+/* ---- entities ------------------------------------------------------------------ */
+
+static int parse_view(parser *p)
+{
+	static const char *const keys[] = {"from", "at", "up", "angle", "hither", "resolution"};
+	view *v = &p->s->camera;
+	long size;
+	int k;
+	p->view_line = p->lx.tok_line;
+	for (k = 0; k < 6; k++) {
+		if (!next_token(&p->lx) || strcmp(p->lx.tok, keys[k]) != 0) {
+			if (p->lx.failed)
+				return 0;
+			return fail(&p->lx, p->lx.tok_line, "view: expected '%s', got '%s'", keys[k],
+				    p->lx.have_tok ? p->lx.tok : "end of file");
+		}
+		switch (k) {
+		case 0:
+			if (!read_vec(&p->lx, "a number (view from)", &v->from))
+				return 0;
+			break;
+		case 1:
+			if (!read_vec(&p->lx, "a number (view at)", &v->at))
+				return 0;
+			break;
+		case 2:
+			if (!read_vec(&p->lx, "a number (view up)", &v->up))
+				return 0;
+			break;
+		case 3:
+			if (!read_number(&p->lx, "a number (view angle)", &v->angle))
+				return 0;
+			if (!(v->angle > REAL_C(0.0) && v->angle < REAL_C(180.0)))
+				return fail(&p->lx, p->lx.tok_line,
+					    "view angle must be between 0 and 180 degrees, got %s",
+					    p->lx.tok);
+			break;
+		case 4:
+			if (!read_number(&p->lx, "a number (view hither)", &v->hither))
+				return 0;
+			break;
+		default:
+			if (!read_count(&p->lx, "resolution width", 1, RT_MAX_WIDTH, "RT_MAX_WIDTH",
+					&size))
+				return 0;
+			v->width = (int)size;
+			if (!read_count(&p->lx, "resolution height", 1, RT_MAX_HEIGHT,
+					"RT_MAX_HEIGHT", &size))
+				return 0;
+			v->height = (int)size;
+		}
+	}
+	/* The camera needs a direction and an up that is not along it. */
+	{
+		vec3 dir = vec_sub(v->at, v->from);
+		vec3 side = vec_cross(vec_normalize(dir), vec_normalize(v->up));
+		if (!(vec_dot(dir, dir) > REAL_C(0.0)))
+			return fail(&p->lx, p->view_line, "view: 'from' and 'at' are the same point");
+		if (!(vec_length(side) > REAL_C(1e-9)))
+			return fail(&p->lx, p->view_line,
+				    "view: 'up' is zero or parallel to the view direction");
+	}
+	return 1;
+}
+
+static int parse_light(parser *p)
+{
+	scene *s = p->s;
+	int line = p->lx.tok_line;
+	light *l;
+	if (s->light_count == RT_MAX_LIGHTS)
+		return capacity_error(p, "lights", "RT_MAX_LIGHTS");
+	l = &s->lights[s->light_count];
+	if (!read_vec(&p->lx, "a number (light position)", &l->position))
+		return 0;
+	/* The colour is optional: present when a number follows on the same line. */
+	p->light_has_color[s->light_count] = 0;
+	if (next_token(&p->lx)) {
+		char *end;
+		int same_line = p->lx.tok_line == line;
+		(void)real_parse(p->lx.tok, &end);
+		push_back(&p->lx);
+		if (same_line && end != p->lx.tok && *end == '\0') {
+			if (!read_vec(&p->lx, "a number (light colour)", &l->color))
+				return 0;
+			p->light_has_color[s->light_count] = 1;
+		}
+	} else if (p->lx.failed) {
+		return 0;
+	} else {
+		push_back(&p->lx);
+	}
+	if (!p->light_has_color[s->light_count])
+		p->unlit_lights++;
+	s->light_count++;
+	return 1;
+}
+
+static int parse_material(parser *p)
+{
+	material m;
+	int index;
+	if (!read_vec(&p->lx, "a number (material colour)", &m.color) ||
+	    !read_number(&p->lx, "a number (material Kd)", &m.kd) ||
+	    !read_number(&p->lx, "a number (material Ks)", &m.ks) ||
+	    !read_number(&p->lx, "a number (material Shine)", &m.shine) ||
+	    !read_number(&p->lx, "a number (material T)", &m.kt) ||
+	    !read_number(&p->lx, "a number (material index of refraction)", &m.ior))
+		return 0;
+	if (m.kd < 0 || m.ks < 0 || m.kt < 0 || m.shine < 0 || m.color.x < 0 || m.color.y < 0 ||
+	    m.color.z < 0)
+		return fail(&p->lx, p->lx.tok_line,
+			    "material: colour, Kd, Ks, Shine and T must not be negative");
+	if (m.kt > REAL_C(0.0) && !(m.ior > REAL_C(0.0)))
+		return fail(&p->lx, p->lx.tok_line,
+			    "material: a transmitting material (T > 0) needs an index of refraction "
+			    "> 0, got %s",
+			    p->lx.tok);
+	/* ior means nothing for opaque materials (SPD writes 0 or 1): store 1 so they share. */
+	if (m.kt <= REAL_C(0.0))
+		m.ior = REAL_C(1.0);
+	m.color = image_srgb_to_linear(m.color);
+	m.absorb = p->absorb;
+	p->absorb = REAL_C(0.0);
+	index = intern_material(p, &m);
+	if (index < 0)
+		return 0;
+	p->material = index;
+	return 1;
+}
+
+static int parse_sphere(parser *p)
+{
+	int line = p->lx.tok_line;
+	vec3 center;
+	real radius;
+	object *o;
+	if (!read_vec(&p->lx, "a number (sphere centre)", &center) ||
+	    !read_number(&p->lx, "a number (sphere radius)", &radius))
+		return 0;
+	if (radius == REAL_C(0.0)) {
+		warn(p, line, "sphere with radius 0");
+		return 1;
+	}
+	o = new_object(p, SHAPE_SPHERE);
+	if (!o)
+		return 0;
+	o->line = line;
+	/* NFF: a negative radius shows only the inside. */
+	if (radius < REAL_C(0.0)) {
+		o->flags |= OBJ_INSIDE_ONLY;
+		radius = -radius;
+	}
+	o->u.sphere.center = center;
+	o->u.sphere.radius = radius;
+	o->u.sphere.radius2 = real_mul(radius, radius);
+	if (!real_isfinite(o->u.sphere.radius2))
+		return fail(&p->lx, line, "sphere radius %s is too large", p->lx.tok);
+	p->s->object_count++;
+	return 1;
+}
+
+/* Newell's normal (twice the vector area) of vertices[0..count). */
+static vec3 newell_normal(const vec3 *v, int count)
+{
+	vec3 n = vec_make(REAL_C(0.0), REAL_C(0.0), REAL_C(0.0));
+	int i;
+	for (i = 0; i < count; i++) {
+		vec3 a = v[i], b = v[i + 1 == count ? 0 : i + 1];
+		n.x += real_mul(a.y - b.y, a.z + b.z);
+		n.y += real_mul(a.z - b.z, a.x + b.x);
+		n.z += real_mul(a.x - b.x, a.y + b.y);
+	}
+	return n;
+}
+
+/* `p n` or `pp n` followed by n vertices (pp: each with its normal). */
+static int parse_polygon(parser *p, int patch)
+{
+	scene *s = p->s;
+	int line = p->lx.tok_line, i, first = s->vertex_count;
+	long count;
+	vec3 normal, centroid;
+	real length;
+	polygon_shape *poly;
+	object *o;
+
+	if (!read_count(&p->lx, patch ? "patch vertex count" : "polygon vertex count", 3,
+			RT_MAX_POLY_VERTS, "RT_MAX_POLY_VERTS", &count))
+		return 0;
+	if (count > RT_MAX_VERTICES - s->vertex_count)
+		return capacity_error(p, "polygon vertices in the scene", "RT_MAX_VERTICES");
+	for (i = 0; i < count; i++) {
+		if (!read_vec(&p->lx, patch ? "a number (patch vertex)" : "a number (polygon vertex)",
+			      &s->vertices[first + i]))
+			return 0;
+		if (patch && !read_vec(&p->lx, "a number (patch vertex normal)", &s->normals[first + i]))
+			return 0;
+	}
+	normal = newell_normal(s->vertices + first, (int)count);
+	length = vec_length(normal);
+	if (!(length > REAL_C(0.0)) || !real_isfinite(length)) {
+		warn(p, line, patch ? "patch with zero area" : "polygon with zero area");
+		return 1;
+	}
+	o = new_object(p, patch ? SHAPE_PATCH : SHAPE_POLYGON);
+	if (!o)
+		return 0;
+	o->line = line;
+	poly = &o->u.polygon;
+	poly->normal = vec_scale(normal, real_div(REAL_C(1.0), length));
+	/* The plane passes through the centroid: the best fit for slightly non-planar input. */
+	centroid = vec_make(REAL_C(0.0), REAL_C(0.0), REAL_C(0.0));
+	for (i = 0; i < count; i++)
+		centroid = vec_add(centroid, s->vertices[first + i]);
+	centroid = vec_scale(centroid, real_div(REAL_C(1.0), real_from_int(count)));
+	poly->offset = vec_dot(poly->normal, centroid);
+	poly->first = first;
+	poly->count = (int)count;
+	poly->axis = real_fabs(poly->normal.x) > real_fabs(poly->normal.y)
+			     ? (real_fabs(poly->normal.x) > real_fabs(poly->normal.z) ? 0 : 2)
+			     : (real_fabs(poly->normal.y) > real_fabs(poly->normal.z) ? 1 : 2);
+	if (patch) {
+		/* A zero vertex normal falls back to the face normal. */
+		for (i = 0; i < count; i++) {
+			vec3 *n = &s->normals[first + i];
+			*n = vec_dot(*n, *n) > REAL_C(0.0) ? vec_normalize(*n) : poly->normal;
+		}
+	}
+	s->vertex_count += (int)count;
+	s->object_count++;
+	return 1;
+}
+
+static int parse_cone(parser *p)
+{
+	int line = p->lx.tok_line;
+	vec3 base, apex, axis;
+	real base_radius, apex_radius, length;
+	unsigned char inside_only = 0;
+	object *o;
+	if (!read_vec(&p->lx, "a number (cone base centre)", &base) ||
+	    !read_number(&p->lx, "a number (cone base radius)", &base_radius) ||
+	    !read_vec(&p->lx, "a number (cone apex centre)", &apex) ||
+	    !read_number(&p->lx, "a number (cone apex radius)", &apex_radius))
+		return 0;
+	/* NFF: both radii negative shows only the inside. */
+	if (base_radius < REAL_C(0.0) && apex_radius <= REAL_C(0.0)) {
+		inside_only = OBJ_INSIDE_ONLY;
+		base_radius = -base_radius;
+		apex_radius = -apex_radius;
+	} else if (base_radius < REAL_C(0.0) || apex_radius < REAL_C(0.0)) {
+		return fail(&p->lx, line, "cone: both radii must have the same sign");
+	}
+	axis = vec_sub(apex, base);
+	length = vec_length(axis);
+	if (!(length > REAL_C(0.0))) {
+		warn(p, line, "cone with zero length");
+		return 1;
+	}
+	if (base_radius == REAL_C(0.0) && apex_radius == REAL_C(0.0)) {
+		warn(p, line, "cone with both radii 0");
+		return 1;
+	}
+	o = new_object(p, SHAPE_CONE);
+	if (!o)
+		return 0;
+	o->line = line;
+	o->flags |= inside_only;
+	o->u.cone.base = base;
+	o->u.cone.axis = vec_scale(axis, real_div(REAL_C(1.0), length));
+	o->u.cone.length = length;
+	o->u.cone.base_radius = base_radius;
+	o->u.cone.apex_radius = apex_radius;
+	o->u.cone.slope = real_div(apex_radius - base_radius, length);
+	p->s->object_count++;
+	return 1;
+}
+
+/* Adds the half-space n.x <= d to the plane pool, normalised. */
+static int add_halfspace(parser *p, vec3 n, real d)
+{
+	scene *s = p->s;
+	real length = vec_length(n);
+	if (!(length > REAL_C(0.0)))
+		return fail(&p->lx, p->lx.tok_line, "polyhedron: a plane normal is zero");
+	if (s->plane_count == RT_MAX_PLANES)
+		return capacity_error(p, "polyhedron planes in the scene", "RT_MAX_PLANES");
+	s->planes[s->plane_count].normal = vec_scale(n, real_div(REAL_C(1.0), length));
+	s->planes[s->plane_count].offset = real_div(d, length);
+	s->plane_count++;
+	return 1;
+}
+
+/* Extension `polyhedron n` then n planes `nx ny nz d`: the solid where every n.x <= d. */
+static int parse_hedron(parser *p)
+{
+	int line = p->lx.tok_line, first = p->s->plane_count, i;
+	long count;
+	object *o;
+	if (!read_count(&p->lx, "polyhedron plane count", 1, RT_MAX_HEDRON_PLANES,
+			"RT_MAX_HEDRON_PLANES", &count))
+		return 0;
+	for (i = 0; i < count; i++) {
+		vec3 n;
+		real d;
+		if (!read_vec(&p->lx, "a number (polyhedron plane normal)", &n) ||
+		    !read_number(&p->lx, "a number (polyhedron plane offset)", &d) ||
+		    !add_halfspace(p, n, d))
+			return 0;
+	}
+	o = new_object(p, SHAPE_HEDRON);
+	if (!o)
+		return 0;
+	o->line = line;
+	o->u.hedron.first = first;
+	o->u.hedron.count = (int)count;
+	p->s->object_count++;
+	return 1;
+}
+
+/* Extension `box x0 y0 z0 x1 y1 z1`: an axis-aligned box from two opposite corners. */
+static int parse_box(parser *p)
+{
+	int line = p->lx.tok_line, first = p->s->plane_count, axis;
+	vec3 a, b;
+	object *o;
+	if (!read_vec(&p->lx, "a number (box corner)", &a) ||
+	    !read_vec(&p->lx, "a number (box corner)", &b))
+		return 0;
+	if (a.x == b.x || a.y == b.y || a.z == b.z) {
+		warn(p, line, "box with zero thickness");
+		return 1;
+	}
+	for (axis = 0; axis < 3; axis++) {
+		real lo = real_min(vec_get(a, axis), vec_get(b, axis));
+		real hi = real_max(vec_get(a, axis), vec_get(b, axis));
+		vec3 n = vec_make(axis == 0 ? REAL_C(1.0) : REAL_C(0.0),
+				  axis == 1 ? REAL_C(1.0) : REAL_C(0.0),
+				  axis == 2 ? REAL_C(1.0) : REAL_C(0.0));
+		if (!add_halfspace(p, n, hi) || !add_halfspace(p, vec_neg(n), -lo))
+			return 0;
+	}
+	o = new_object(p, SHAPE_HEDRON);
+	if (!o)
+		return 0;
+	o->line = line;
+	o->u.hedron.first = first;
+	o->u.hedron.count = 6;
+	p->s->object_count++;
+	return 1;
+}
+
+/* Extension `plane px py pz nx ny nz`: the infinite plane through p with normal n. */
+static int parse_plane(parser *p)
+{
+	int line = p->lx.tok_line;
+	vec3 point, normal;
+	object *o;
+	if (!read_vec(&p->lx, "a number (plane point)", &point) ||
+	    !read_vec(&p->lx, "a number (plane normal)", &normal))
+		return 0;
+	if (!(vec_dot(normal, normal) > REAL_C(0.0)))
+		return fail(&p->lx, line, "plane: the normal is zero");
+	o = new_object(p, SHAPE_PLANE);
+	if (!o)
+		return 0;
+	o->line = line;
+	o->u.plane.normal = vec_normalize(normal);
+	o->u.plane.offset = vec_dot(o->u.plane.normal, point);
+	p->s->object_count++;
+	return 1;
+}
+
+static int parse_settings(parser *p, const char *name)
+{
+	scene *s = p->s;
+	if (strcmp(name, "ambient") == 0)
+		return read_vec(&p->lx, "a number (ambient colour)", &s->ambient);
+	if (strcmp(name, "absorb") == 0) {
+		if (!read_number(&p->lx, "a number (absorption coefficient)", &p->absorb))
+			return 0;
+		if (p->absorb < REAL_C(0.0))
+			return fail(&p->lx, p->lx.tok_line,
+				    "absorption coefficient must not be negative, got %s", p->lx.tok);
+		return 1;
+	}
+	if (strcmp(name, "depth") == 0) {
+		long depth;
+		if (!read_count(&p->lx, "depth", 1, RT_MAX_DEPTH, "RT_MAX_DEPTH", &depth))
+			return 0;
+		s->depth = (int)depth;
+		return 1;
+	}
+	/* cutoff */
+	if (!read_number(&p->lx, "a number (cutoff weight)", &s->cutoff))
+		return 0;
+	if (!(s->cutoff >= REAL_C(0.0) && s->cutoff < REAL_C(1.0)))
+		return fail(&p->lx, p->lx.tok_line, "cutoff weight must be in [0, 1), got %s",
+			    p->lx.tok);
+	return 1;
+}
+
+/* Lights given without a colour share a total of sqrt(N) (each 1/sqrt(N)), as SPD's own
+ * exports to other renderers do. */
+static void finish_lights(parser *p)
+{
+	scene *s = p->s;
+	real each;
+	int i;
+	if (!p->unlit_lights)
+		return;
+	each = real_div(REAL_C(1.0), real_sqrt(real_from_int(s->light_count)));
+	for (i = 0; i < s->light_count; i++)
+		if (!p->light_has_color[i])
+			s->lights[i].color = vec_make(each, each, each);
+}
+
+static int parse_entity(parser *p)
+{
+	const char *cmd = p->lx.tok;
+	if (strcmp(cmd, "v") == 0)
+		return parse_view(p);
+	if (strcmp(cmd, "b") == 0) {
+		if (!read_vec(&p->lx, "a number (background colour)", &p->s->background))
+			return 0;
+		p->s->background = image_srgb_to_linear(p->s->background);
+		return 1;
+	}
+	if (strcmp(cmd, "l") == 0)
+		return parse_light(p);
+	if (strcmp(cmd, "f") == 0)
+		return parse_material(p);
+	if (strcmp(cmd, "s") == 0)
+		return parse_sphere(p);
+	if (strcmp(cmd, "p") == 0)
+		return parse_polygon(p, 0);
+	if (strcmp(cmd, "pp") == 0)
+		return parse_polygon(p, 1);
+	if (strcmp(cmd, "c") == 0)
+		return parse_cone(p);
+	if (strcmp(cmd, "polyhedron") == 0)
+		return parse_hedron(p);
+	if (strcmp(cmd, "box") == 0)
+		return parse_box(p);
+	if (strcmp(cmd, "plane") == 0)
+		return parse_plane(p);
+	if (strcmp(cmd, "ambient") == 0 || strcmp(cmd, "absorb") == 0 ||
+	    strcmp(cmd, "depth") == 0 || strcmp(cmd, "cutoff") == 0)
+		return parse_settings(p, cmd);
+	return fail(&p->lx, p->lx.tok_line, "unknown command '%s'", cmd);
+}
+
+/* Large: static, so the MCU's small stack never holds it. */
+static parser the_parser;
+
+int parse_scene(scene *s, const char *file, read_fn read, void *ctx)
+{
+	parser *p = &the_parser;
+	memset(p, 0, sizeof *p);
+	scene_init(s, file);
+	p->s = s;
+	p->material = -1;
+	p->lx.read = read;
+	p->lx.ctx = ctx;
+	p->lx.file = file;
+	p->lx.line = 1;
+	p->lx.pending = NO_BYTE;
+	p->lx.at_start = 1;
+	while (next_token(&p->lx))
+		if (!parse_entity(p))
+			return 0;
+	if (p->lx.failed)
+		return 0;
+	if (!p->view_line)
+		return fail(&p->lx, p->lx.line, "no view: a scene needs a 'v' entity");
+	finish_lights(p);
+	return 1;
+}
+
+static int read_stdio(void *ctx)
+{
+	int c = getc((FILE *)ctx);
+	return c == EOF ? -1 : c;
+}
+
+int parse_scene_file(scene *s, const char *path)
+{
+	FILE *f = fopen(path, "rb");
+	int ok;
+	if (!f) {
+		diag_error(path, 0, "cannot open: %s", strerror(errno));
+		return 0;
+	}
+	ok = parse_scene(s, path, read_stdio, f);
+	if (ok && ferror(f)) {
+		diag_error(path, 0, "read error");
+		ok = 0;
+	}
+	fclose(f);
+	return ok;
+}

@@ -1,0 +1,95 @@
+/* polygon.c - ray/polygon (NFF p) and ray/patch (NFF pp) intersection.
+ * Plane first, then the crossings test in the plane (Haines, Graphics Gems IV) with the
+ * half-open rule and each edge's endpoints in a canonical order, so a point on an edge
+ * shared by two polygons belongs to exactly one of them (numerics.md section 3).
+ * See LICENSE for copyright and licence. */
+#include "shape.h"
+
+int polygon_contains(const vec3 *vertices, int count, int axis, real pu, real pv)
+{
+	int u_axis = (axis + 1) % 3, v_axis = (axis + 2) % 3;
+	int inside = 0, i;
+
+	for (i = 0; i < count; i++) {
+		vec3 a = vertices[i], b = vertices[i + 1 == count ? 0 : i + 1];
+		real lo_u = vec_get(a, u_axis), lo_v = vec_get(a, v_axis);
+		real hi_u = vec_get(b, u_axis), hi_v = vec_get(b, v_axis);
+		/* Canonical order (by v, then u): both neighbours of an edge see the same
+		 * endpoints in the same order and so round the same way. */
+		if (hi_v < lo_v || (hi_v == lo_v && hi_u < lo_u)) {
+			real su = lo_u, sv = lo_v;
+			lo_u = hi_u;
+			lo_v = hi_v;
+			hi_u = su;
+			hi_v = sv;
+		}
+		/* Half-open in v: the edge counts when lo_v < pv <= hi_v. */
+		if (!(lo_v < pv && pv <= hi_v))
+			continue;
+		/* Does the edge cross the +u ray from the point, i.e. is its u-intercept >= pu?
+		 * Written without a division: hi_v - lo_v > 0 here. */
+		if (real_mul(pv - lo_v, hi_u - lo_u) >= real_mul(pu - lo_u, hi_v - lo_v))
+			inside = !inside;
+	}
+	return inside;
+}
+
+/* Signed area weight of triangle (a, b, c) about the plane normal n. */
+static real area_along(vec3 n, vec3 a, vec3 b, vec3 c)
+{
+	return vec_dot(n, vec_cross(vec_sub(b, a), vec_sub(c, a)));
+}
+
+/* Shading normal of a patch at p: barycentric interpolation of the vertex normals in
+ * the fan triangle (0, i, i+1) that holds p (SPD patches are all triangles). */
+static vec3 patch_normal(const scene *s, const polygon_shape *poly, vec3 p)
+{
+	const vec3 *v = s->vertices + poly->first;
+	const vec3 *vn = s->normals + poly->first;
+	int i;
+	for (i = 1; i + 1 < poly->count; i++) {
+		real whole = area_along(poly->normal, v[0], v[i], v[i + 1]);
+		real w0 = area_along(poly->normal, p, v[i], v[i + 1]);
+		real w1 = area_along(poly->normal, v[0], p, v[i + 1]);
+		real w2 = whole - w0 - w1;
+		if (whole != REAL_C(0.0) && ((w0 >= 0 && w1 >= 0 && w2 >= 0) ||
+					      i + 2 == poly->count)) {
+			vec3 n = vec_scale(vn[0], w0);
+			n = vec_madd(n, w1, vn[i]);
+			n = vec_madd(n, w2, vn[i + 1]);
+			n = vec_normalize(n);
+			return vec_dot(n, n) > REAL_C(0.0) ? n : poly->normal;
+		}
+	}
+	return poly->normal;
+}
+
+int polygon_intersect(const scene *s, const object *o, const ray *r, real tmin, real tmax,
+		      hit *h)
+{
+	const polygon_shape *poly = &o->u.polygon;
+	real denom = vec_dot(poly->normal, r->dir);
+	real t;
+	vec3 p;
+
+	/* A ray parallel to the plane (or lying in it) misses (numerics.md G07, G08). */
+	if (denom == REAL_C(0.0))
+		return 0;
+	/* An opaque polygon is one-sided: seen from behind it is not there. */
+	if (denom > REAL_C(0.0) && !(o->flags & OBJ_TWO_SIDED))
+		return 0;
+	t = real_div(poly->offset - vec_dot(poly->normal, r->origin), denom);
+	if (!(t > tmin && t < tmax))
+		return 0;
+	p = vec_madd(r->origin, t, r->dir);
+	if (!polygon_contains(s->vertices + poly->first, poly->count, poly->axis,
+			      vec_get(p, (poly->axis + 1) % 3), vec_get(p, (poly->axis + 2) % 3)))
+		return 0;
+	if (h) {
+		h->t = t;
+		h->point = p;
+		h->normal = poly->normal;
+		h->shading = o->kind == SHAPE_PATCH ? patch_normal(s, poly, p) : poly->normal;
+	}
+	return 1;
+}

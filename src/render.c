@@ -1,0 +1,54 @@
+/* render.c - walks the image row by row and hands each finished row to the writer:
+ * single pass, no frame buffer, so memory does not grow with the image height.
+ * See LICENSE for copyright and licence. */
+#include "render.h"
+
+RT_STATIC_ASSERT(row_fits_int, RT_MAX_WIDTH < 1000000);
+
+/* Colours of one row of pixel centres, or two rows of pixel corners. */
+static vec3 row_colors[RT_MAX_WIDTH + 1];
+static vec3 corner_rows[2][RT_MAX_WIDTH + 1];
+static unsigned char row_bytes[3 * RT_MAX_WIDTH];
+
+/* Eye rays through the corners on image line y (in pixels from the top). */
+static void trace_corner_row(tracer *t, const camera *c, int y, vec3 *out)
+{
+	int x;
+	for (x = 0; x <= c->width; x++) {
+		ray r = camera_ray(c, real_from_int(x), real_from_int(y));
+		out[x] = tracer_eye(t, &r, NULL);
+	}
+}
+
+int render_ppm(tracer *t, const camera *c, enum render_sampling sampling, write_fn write,
+	       void *ctx)
+{
+	int x, y, top = 0;
+	if (!ppm_write_header(write, ctx, c->width, c->height))
+		return 0;
+	if (sampling == SAMPLE_CORNERS)
+		trace_corner_row(t, c, 0, corner_rows[top]);
+	for (y = 0; y < c->height; y++) {
+		if (sampling == SAMPLE_CORNERS) {
+			/* The bottom corners of this row are the top corners of the next. */
+			const vec3 *above = corner_rows[top], *below = corner_rows[!top];
+			trace_corner_row(t, c, y + 1, corner_rows[!top]);
+			for (x = 0; x < c->width; x++) {
+				vec3 sum = vec_add(vec_add(above[x], above[x + 1]),
+						   vec_add(below[x], below[x + 1]));
+				row_colors[x] = vec_scale(sum, REAL_C(0.25));
+			}
+			top = !top;
+		} else {
+			for (x = 0; x < c->width; x++) {
+				ray r = camera_ray(c, real_from_int(x) + REAL_C(0.5),
+						   real_from_int(y) + REAL_C(0.5));
+				row_colors[x] = tracer_eye(t, &r, NULL);
+			}
+		}
+		image_encode_row(row_colors, c->width, row_bytes);
+		if (!write(ctx, row_bytes, (size_t)c->width * 3))
+			return 0;
+	}
+	return 1;
+}

@@ -1,0 +1,21 @@
+/* render.h - the pixel loop: eye rays for each row, streamed out row by row.
+ * See LICENSE for copyright and licence. */
+#ifndef RT_RENDER_H
+#define RT_RENDER_H
+
+#include "camera.h"
+#include "image.h"
+#include "trace.h"
+
+/* Sampling of each pixel. */
+enum render_sampling {
+	SAMPLE_CENTRE, /* one eye ray through the pixel centre */
+	SAMPLE_CORNERS /* SPD: (W+1) x (H+1) corner rays, each pixel the mean of its four */
+};
+
+/* Renders the whole image as PPM through `write`. Returns 1 on success, 0 when a write
+ * fails (the caller reports it). */
+int render_ppm(tracer *t, const camera *c, enum render_sampling sampling, write_fn write,
+	       void *ctx);
+
+#endif

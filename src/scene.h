@@ -1,0 +1,118 @@
+/* scene.h - the parsed scene: fixed arrays of materials, lights and objects.
+ * The parser fills it once; the tracer only reads it.
+ * See LICENSE for copyright and licence. */
+#ifndef RT_SCENE_H
+#define RT_SCENE_H
+
+#include "config.h"
+#include "vec.h"
+
+/* NFF `f` plus the absorption extension. */
+typedef struct {
+	vec3 color;   /* surface colour, 0..1 */
+	real kd;      /* diffuse weight */
+	real ks;      /* highlight weight and mirror weight (clamped below 1 for rays) */
+	real shine;   /* Phong exponent */
+	real kt;      /* weight of the refracted ray; > 0 makes the object two-sided */
+	real ior;     /* index of refraction relative to the outside; used only when kt > 0 */
+	real absorb;  /* Beer-Lambert coefficient inside the object, per scene unit */
+} material;
+
+typedef struct {
+	vec3 position;
+	vec3 color;
+} light;
+
+enum shape_kind {
+	SHAPE_SPHERE,
+	SHAPE_POLYGON, /* NFF p: planar, may be concave */
+	SHAPE_PATCH,   /* NFF pp: planar polygon with per-vertex normals */
+	SHAPE_CONE,    /* NFF c: uncapped cone or cylinder */
+	SHAPE_HEDRON,  /* extension: convex polyhedron as an intersection of half-spaces */
+	SHAPE_PLANE    /* extension: infinite plane */
+};
+
+/* Object flags. */
+#define OBJ_TWO_SIDED 1u  /* back faces are hit too (everything but opaque polygons) */
+#define OBJ_INSIDE_ONLY 2u /* NFF negative radius: only the inside is visible */
+
+typedef struct {
+	vec3 center;
+	real radius, radius2;
+} sphere_shape;
+
+/* A polygon's vertices are scene.vertices[first .. first+count); a patch's normals
+ * are scene.normals at the same indices. `normal` and `offset` give its plane n.x = offset;
+ * `axis` is the coordinate dropped to project it to 2D (the normal's largest). */
+typedef struct {
+	vec3 normal;
+	real offset;
+	int first, count;
+	int axis;
+} polygon_shape;
+
+/* Base centre and radius, unit axis towards the apex end, its length and apex radius. */
+typedef struct {
+	vec3 base, axis;
+	real length;
+	real base_radius, apex_radius;
+	real slope; /* (apex_radius - base_radius) / length */
+} cone_shape;
+
+/* Half-spaces scene.planes[first .. first+count): inside where n.x <= d. */
+typedef struct {
+	int first, count;
+} hedron_shape;
+
+typedef struct {
+	vec3 normal; /* unit */
+	real offset; /* n.x = offset */
+} plane_shape;
+
+typedef struct {
+	unsigned char kind;  /* enum shape_kind */
+	unsigned char flags; /* OBJ_* */
+	unsigned short material;
+	int line; /* scene file line, for messages */
+	union {
+		sphere_shape sphere;
+		polygon_shape polygon;
+		cone_shape cone;
+		hedron_shape hedron;
+		plane_shape plane;
+	} u;
+} object;
+
+typedef struct {
+	vec3 normal;
+	real offset;
+} halfspace;
+
+typedef struct {
+	vec3 from, at, up;
+	real angle; /* full horizontal field of view, degrees */
+	real hither;
+	int width, height;
+} view;
+
+typedef struct {
+	const char *file; /* scene file name, for messages */
+	view camera;
+	vec3 background;
+	vec3 ambient;
+	int depth;   /* ray tree levels, 1..RT_MAX_DEPTH */
+	real cutoff; /* smallest path weight still traced */
+
+	int material_count, light_count, object_count, vertex_count, plane_count;
+	material materials[RT_MAX_MATERIALS];
+	light lights[RT_MAX_LIGHTS];
+	object objects[RT_MAX_OBJECTS];
+	vec3 vertices[RT_MAX_VERTICES];
+	vec3 normals[RT_MAX_VERTICES];
+	halfspace planes[RT_MAX_PLANES];
+} scene;
+
+/* Clears a scene to NFF's defaults (black background, no ambient, default depth). */
+void scene_init(scene *s, const char *file);
+
+#endif

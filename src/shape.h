@@ -1,0 +1,42 @@
+/* shape.h - rays, hit records and the one intersection contract every shape follows.
+ * Each shape_intersect returns 1 on a hit with tmin < t < tmax, else 0; when `h` is
+ * not NULL it fills t, the hit point and the outward geometric and shading normals.
+ * Facing the normals toward the ray happens once, in intersect.c.
+ * See LICENSE for copyright and licence. */
+#ifndef RT_SHAPE_H
+#define RT_SHAPE_H
+
+#include "scene.h"
+
+typedef struct {
+	vec3 origin;
+	vec3 dir; /* unit length */
+} ray;
+
+typedef struct {
+	real t;
+	vec3 point;
+	vec3 normal;  /* geometric normal, unit; outward from the shape, then faced to the ray */
+	vec3 shading; /* shading normal (interpolated on patches), on the same side as normal */
+	int object;   /* index into scene.objects */
+	int front;    /* 1 when the ray arrived from the outside of the surface */
+} hit;
+
+int sphere_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h);
+int polygon_intersect(const scene *s, const object *o, const ray *r, real tmin, real tmax,
+		      hit *h);
+int cone_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h);
+int hedron_intersect(const scene *s, const object *o, const ray *r, real tmin, real tmax,
+		     hit *h);
+int plane_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h);
+
+/* Crossings test (half-open rule, canonical edge order): is (pu, pv) inside the
+ * polygon's projection that drops coordinate `axis`? Exposed for the tests. */
+int polygon_contains(const vec3 *vertices, int count, int axis, real pu, real pv);
+
+/* Solves a t^2 + 2 b t + c = 0 for its roots t0 <= t1 without cancellation
+ * (Press et al.: q = -(b + sign(b) sqrt(b^2 - a c)), t0 = c/q, t1 = q/a), given the
+ * discriminant b^2 - a c computed by the caller. Returns the number of roots (0 or 2). */
+int solve_quadratic(real a, real b, real c, real discriminant, real *t0, real *t1);
+
+#endif

@@ -1,0 +1,60 @@
+/* sphere.c - ray/sphere intersection by the Hearn & Baker discriminant.
+ * numerics.md section 1: r^2 - |f - (f.d)d|^2 avoids the cancellation of b^2 - 4ac for
+ * small, distant or grazing spheres; the stable roots avoid it for huge ones.
+ * See LICENSE for copyright and licence. */
+#include "shape.h"
+
+int solve_quadratic(real a, real b, real c, real discriminant, real *t0, real *t1)
+{
+	real root, q;
+	/* `!(x >= 0)` also rejects NaN (numerics.md N01). */
+	if (!(discriminant >= REAL_C(0.0)))
+		return 0;
+	root = real_sqrt(discriminant);
+	q = b >= REAL_C(0.0) ? -(b + root) : root - b;
+	/* q = 0 only when b = 0 and the discriminant is 0: a tangent at the origin (S19). */
+	if (q == REAL_C(0.0)) {
+		if (a == REAL_C(0.0))
+			return 0;
+		*t0 = *t1 = REAL_C(0.0);
+		return 2;
+	}
+	*t0 = real_div(c, q);
+	/* a = 0 is the linear case (a ray parallel to a cylinder's axis): one root only. */
+	*t1 = a == REAL_C(0.0) ? *t0 : real_div(q, a);
+	if (*t1 < *t0) {
+		real swap = *t0;
+		*t0 = *t1;
+		*t1 = swap;
+	}
+	return 2;
+}
+
+int sphere_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h)
+{
+	const sphere_shape *s = &o->u.sphere;
+	vec3 f = vec_sub(r->origin, s->center);
+	real b = vec_dot(f, r->dir);
+	/* Perpendicular offset of the centre from the ray line: terms of size r^2, not |f|^2. */
+	vec3 v = vec_madd(f, -b, r->dir);
+	real discriminant = s->radius2 - vec_dot(v, v);
+	real c = vec_dot(f, f) - s->radius2;
+	real t0, t1, t;
+
+	if (!solve_quadratic(REAL_C(1.0), b, c, discriminant, &t0, &t1))
+		return 0;
+	/* The near root enters, the far root leaves; an inside-only sphere shows only exits. */
+	if (t0 > tmin && t0 < tmax && !(o->flags & OBJ_INSIDE_ONLY))
+		t = t0;
+	else if (t1 > tmin && t1 < tmax)
+		t = t1;
+	else
+		return 0;
+	if (h) {
+		h->t = t;
+		h->point = vec_madd(r->origin, t, r->dir);
+		h->normal = vec_scale(vec_sub(h->point, s->center), real_div(REAL_C(1.0), s->radius));
+		h->shading = h->normal;
+	}
+	return 1;
+}

@@ -1,0 +1,210 @@
+/* trace.c - start reading here: the recursive ray tracer (Hearn & Baker ch. 10).
+ *
+ * A ray finds its nearest hit; each light in front of the surface sends a shadow ray and
+ * adds diffuse and a Phong highlight; an ambient term is added; a mirror ray weighted by
+ * Ks and a refracted ray weighted by T recurse; light travelling inside an absorbing
+ * medium is attenuated by e^(-a d). Recursion stops at the depth limit and when a path's
+ * weight can no longer change an 8-bit pixel. Nothing is traced that cannot contribute.
+ *
+ * Stack: trace_ray recurses at most `depth` <= RT_MAX_DEPTH levels; one frame is about
+ * 400 bytes with double (hit record, two media stacks, colours), so under 4 KiB in all.
+ * See LICENSE for copyright and licence. */
+#include "trace.h"
+
+#include "intersect.h"
+#include "optics.h"
+
+/* Mirror weights stay below 1 so two facing mirrors still fade out. */
+#define MIRROR_MAX REAL_C(0.99609375) /* 255/256 */
+
+void tracer_init(tracer *t, const scene *s, int depth, real cutoff)
+{
+	int i;
+	t->scene = s;
+	t->depth = depth;
+	t->cutoff = cutoff;
+	t->stats.eye_rays = t->stats.eye_hits = 0;
+	t->stats.shadow_rays = t->stats.reflect_rays = t->stats.refract_rays = 0;
+	/* The eye may sit inside glass: find the closed transmitting objects around it by
+	 * asking whether a ray from the eye leaves each of them (an exit hit). */
+	t->eye_media.count = 0;
+	for (i = 0; i < s->object_count; i++) {
+		const object *o = &s->objects[i];
+		ray probe;
+		hit h;
+		if (s->materials[o->material].kt <= REAL_C(0.0))
+			continue;
+		if (o->kind != SHAPE_SPHERE && o->kind != SHAPE_HEDRON)
+			continue;
+		probe.origin = s->camera.from;
+		probe.dir = vec_make(REAL_C(0.0), REAL_C(0.0), REAL_C(1.0));
+		if (object_intersect(s, i, &probe, REAL_C(0.0), REAL_MAX, &h) &&
+		    vec_dot(h.normal, probe.dir) > REAL_C(0.0) &&
+		    t->eye_media.count < RT_MAX_MEDIA)
+			t->eye_media.material[t->eye_media.count++] = o->material;
+	}
+}
+
+vec3 trace_offset(vec3 p, vec3 side, real t)
+{
+	real scale = real_max(REAL_C(1.0), real_max(vec_max_abs(p), real_fabs(t)));
+	return vec_madd(p, real_mul(REAL_OFFSET, scale), side);
+}
+
+/* Index of refraction of the medium on top of the stack (1 for the outside). */
+static real medium_ior(const scene *s, const media *m)
+{
+	return m->count ? s->materials[m->material[m->count - 1]].ior : REAL_C(1.0);
+}
+
+/* The stack after the ray crosses a surface of material `mat`: entering pushes it,
+ * leaving removes its innermost entry (or nothing, if the ray was not known inside). */
+static void media_cross(const media *m, int mat, int entering, media *next)
+{
+	int i, skip = -1;
+	*next = *m;
+	if (entering) {
+		if (next->count < RT_MAX_MEDIA)
+			next->material[next->count++] = mat;
+		return;
+	}
+	for (i = m->count - 1; i >= 0 && skip < 0; i--)
+		if (m->material[i] == mat)
+			skip = i;
+	if (skip < 0)
+		return;
+	for (i = skip; i + 1 < m->count; i++)
+		next->material[i] = m->material[i + 1];
+	next->count--;
+}
+
+static vec3 trace_ray(tracer *t, const ray *r, int level, real weight, const media *m,
+		      int *hit_object);
+
+/* Diffuse and highlight from every light the surface faces, through shadow rays. */
+static vec3 shade_lights(tracer *t, const hit *h, const material *mat, vec3 mirror_dir)
+{
+	const scene *s = t->scene;
+	vec3 sum = vec_mul(s->ambient, mat->color);
+	int i;
+	for (i = 0; i < s->light_count; i++) {
+		const light *l = &s->lights[i];
+		vec3 to_light = vec_sub(l->position, h->point);
+		real distance = vec_length(to_light), diffuse, highlight, pass;
+		vec3 dir;
+		ray shadow;
+		if (!(distance > REAL_C(0.0)))
+			continue;
+		dir = vec_scale(to_light, real_div(REAL_C(1.0), distance));
+		/* A light behind the surface sends no shadow ray (SPD rule). */
+		if (vec_dot(h->normal, dir) <= REAL_C(0.0))
+			continue;
+		diffuse = real_mul(mat->kd, real_max(vec_dot(h->shading, dir), REAL_C(0.0)));
+		highlight = REAL_C(0.0);
+		if (mat->ks > REAL_C(0.0)) {
+			real c = vec_dot(mirror_dir, dir);
+			if (c > REAL_C(0.0))
+				highlight = real_mul(mat->ks, real_pow(c, mat->shine));
+		}
+		if (!(diffuse > REAL_C(0.0)) && !(highlight > REAL_C(0.0)))
+			continue;
+		shadow.origin = trace_offset(h->point, h->normal, h->t);
+		shadow.dir = dir;
+		t->stats.shadow_rays++;
+		pass = scene_transmittance(s, &shadow, distance);
+		if (pass <= REAL_C(0.0))
+			continue;
+		sum = vec_add(sum, vec_scale(vec_mul(l->color, vec_madd(vec_make(highlight, highlight,
+										 highlight),
+									diffuse, mat->color)),
+					     pass));
+	}
+	return sum;
+}
+
+/* Mirror ray of weight `ks` leaving the surface on the ray's side. */
+static vec3 trace_mirror(tracer *t, const hit *h, vec3 dir, int level, real weight, real ks,
+			 const media *m)
+{
+	ray next;
+	next.origin = trace_offset(h->point, h->normal, h->t);
+	next.dir = dir;
+	t->stats.reflect_rays++;
+	return vec_scale(trace_ray(t, &next, level + 1, real_mul(weight, ks), m, NULL), ks);
+}
+
+/* Refracted ray of weight kt (tinted by the surface colour, as NFF's T filters through
+ * the object), or a mirror ray of the same weight on total internal reflection. */
+static vec3 trace_refraction(tracer *t, const ray *r, const hit *h, const material *mat,
+			     int level, real weight, const media *m)
+{
+	const scene *s = t->scene;
+	int mat_index = s->objects[h->object].material;
+	media next_media;
+	real eta;
+	vec3 dir;
+	ray next;
+
+	media_cross(m, mat_index, h->front, &next_media);
+	eta = real_div(medium_ior(s, m), h->front ? mat->ior : medium_ior(s, &next_media));
+	if (!optics_refract(r->dir, h->normal, eta, &dir))
+		return vec_mul(mat->color, trace_mirror(t, h, optics_reflect(r->dir, h->normal),
+							level, weight, mat->kt, m));
+	next.origin = trace_offset(h->point, vec_neg(h->normal), h->t);
+	next.dir = dir;
+	t->stats.refract_rays++;
+	return vec_scale(vec_mul(mat->color,
+				 trace_ray(t, &next, level + 1, real_mul(weight, mat->kt),
+					   &next_media, NULL)),
+			 mat->kt);
+}
+
+static vec3 trace_ray(tracer *t, const ray *r, int level, real weight, const media *m,
+		      int *hit_object)
+{
+	const scene *s = t->scene;
+	real absorb = m->count ? s->materials[m->material[m->count - 1]].absorb : REAL_C(0.0);
+	const material *mat;
+	vec3 color, mirror_dir;
+	real ks;
+	hit h;
+
+	if (!scene_intersect(s, r, REAL_MAX, &h)) {
+		if (hit_object)
+			*hit_object = -1;
+		/* A ray that never leaves an absorbing medium is absorbed completely. */
+		return absorb > REAL_C(0.0) ? vec_make(REAL_C(0.0), REAL_C(0.0), REAL_C(0.0))
+					    : s->background;
+	}
+	if (hit_object)
+		*hit_object = h.object;
+	mat = &s->materials[s->objects[h.object].material];
+
+	/* Phong shading reflects about the shading normal; if that would send the ray into
+	 * the surface (possible on patches), reflect about the geometric normal instead. */
+	mirror_dir = optics_reflect(r->dir, h.shading);
+	if (vec_dot(mirror_dir, h.normal) <= REAL_C(0.0))
+		mirror_dir = optics_reflect(r->dir, h.normal);
+
+	color = shade_lights(t, &h, mat, mirror_dir);
+	ks = real_min(mat->ks, MIRROR_MAX);
+	if (ks > REAL_C(0.0) && level < t->depth && real_mul(weight, ks) >= t->cutoff)
+		color = vec_add(color, trace_mirror(t, &h, mirror_dir, level, weight, ks, m));
+	if (mat->kt > REAL_C(0.0) && level < t->depth && real_mul(weight, mat->kt) >= t->cutoff)
+		color = vec_add(color, trace_refraction(t, r, &h, mat, level, weight, m));
+	if (absorb > REAL_C(0.0))
+		color = vec_scale(color, optics_beer(absorb, h.t));
+	return color;
+}
+
+vec3 tracer_eye(tracer *t, const ray *r, int *hit_object)
+{
+	int first;
+	vec3 color = trace_ray(t, r, 1, REAL_C(1.0), &t->eye_media, &first);
+	t->stats.eye_rays++;
+	if (first >= 0)
+		t->stats.eye_hits++;
+	if (hit_object)
+		*hit_object = first;
+	return color;
+}

@@ -1,0 +1,38 @@
+/* trace.h - the recursive Whitted tracer: one ray in, one linear colour out.
+ * See LICENSE for copyright and licence. */
+#ifndef RT_TRACE_H
+#define RT_TRACE_H
+
+#include "shape.h"
+
+typedef struct {
+	unsigned long eye_rays, eye_hits;
+	unsigned long shadow_rays, reflect_rays, refract_rays;
+} trace_stats;
+
+/* The media a ray travels in: materials of the transmitting objects it is inside,
+ * innermost last (RTG ch. 11's stack, simplified for objects that do not overlap). */
+typedef struct {
+	int count;
+	int material[RT_MAX_MEDIA];
+} media;
+
+typedef struct {
+	const scene *scene;
+	int depth;   /* ray tree levels, eye ray = 1 */
+	real cutoff; /* smallest path weight still traced */
+	trace_stats stats;
+	media eye_media; /* what the eye is inside of */
+} tracer;
+
+void tracer_init(tracer *t, const scene *s, int depth, real cutoff);
+
+/* Colour seen along an eye ray (linear, not clamped). *hit_object gets the index of the
+ * first object hit, or -1; it may be NULL. */
+vec3 tracer_eye(tracer *t, const ray *r, int *hit_object);
+
+/* The offset origin of a ray leaving a surface at p on the side `side` points to:
+ * moved by REAL_OFFSET times the scale of p's rounding error (numerics.md section 2). */
+vec3 trace_offset(vec3 p, vec3 side, real t);
+
+#endif

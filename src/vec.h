@@ -1,0 +1,77 @@
+/* vec.h - three-component vectors (points, directions, normals and colours).
+ * Small inline functions so each vector expression reads like its maths.
+ * See LICENSE for copyright and licence. */
+#ifndef RT_VEC_H
+#define RT_VEC_H
+
+#include "real.h"
+
+typedef struct {
+	real x, y, z;
+} vec3;
+
+static inline vec3 vec_make(real x, real y, real z)
+{
+	vec3 v;
+	v.x = x;
+	v.y = y;
+	v.z = z;
+	return v;
+}
+
+static inline vec3 vec_add(vec3 a, vec3 b) { return vec_make(a.x + b.x, a.y + b.y, a.z + b.z); }
+static inline vec3 vec_sub(vec3 a, vec3 b) { return vec_make(a.x - b.x, a.y - b.y, a.z - b.z); }
+static inline vec3 vec_neg(vec3 a) { return vec_make(-a.x, -a.y, -a.z); }
+
+static inline vec3 vec_scale(vec3 a, real s)
+{
+	return vec_make(real_mul(a.x, s), real_mul(a.y, s), real_mul(a.z, s));
+}
+
+/* Component-wise product: colour times colour. */
+static inline vec3 vec_mul(vec3 a, vec3 b)
+{
+	return vec_make(real_mul(a.x, b.x), real_mul(a.y, b.y), real_mul(a.z, b.z));
+}
+
+/* a + s*b: a point moved along a direction, or a weighted colour sum. */
+static inline vec3 vec_madd(vec3 a, real s, vec3 b)
+{
+	return vec_make(a.x + real_mul(s, b.x), a.y + real_mul(s, b.y), a.z + real_mul(s, b.z));
+}
+
+static inline real vec_dot(vec3 a, vec3 b)
+{
+	return real_mul(a.x, b.x) + real_mul(a.y, b.y) + real_mul(a.z, b.z);
+}
+
+static inline vec3 vec_cross(vec3 a, vec3 b)
+{
+	return vec_make(real_mul(a.y, b.z) - real_mul(a.z, b.y),
+			real_mul(a.z, b.x) - real_mul(a.x, b.z),
+			real_mul(a.x, b.y) - real_mul(a.y, b.x));
+}
+
+static inline real vec_length(vec3 a) { return real_sqrt(vec_dot(a, a)); }
+
+/* Unit vector along a; the zero vector stays zero (callers reject it first). */
+static inline vec3 vec_normalize(vec3 a)
+{
+	real len = vec_length(a);
+	return len > REAL_C(0.0) ? vec_scale(a, real_div(REAL_C(1.0), len)) : a;
+}
+
+/* Largest absolute component: the scale of a point's rounding error. */
+static inline real vec_max_abs(vec3 a)
+{
+	return real_max(real_fabs(a.x), real_max(real_fabs(a.y), real_fabs(a.z)));
+}
+
+static inline real vec_get(vec3 a, int axis) { return axis == 0 ? a.x : axis == 1 ? a.y : a.z; }
+
+static inline int vec_is_finite(vec3 a)
+{
+	return real_isfinite(a.x) && real_isfinite(a.y) && real_isfinite(a.z);
+}
+
+#endif
