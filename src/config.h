@@ -43,6 +43,13 @@
 #define RT_TOKEN_MAX 64 /* longest token in a scene file, in bytes */
 #endif
 
+#ifndef RT_USE_BVH
+#define RT_USE_BVH 1 /* bounding volume hierarchy for large scenes; 0 leaves it out */
+#endif
+#ifndef RT_BVH_MIN_OBJECTS
+#define RT_BVH_MIN_OBJECTS 12 /* scenes with fewer objects test them all: cheaper */
+#endif
+
 #define RT_DEFAULT_DEPTH 5 /* SPD's testing procedure uses 5 levels */
 
 /* Compile-time check (C99 has no static_assert): a negative array size fails to compile. */

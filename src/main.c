@@ -9,6 +9,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "bvh.h"
 #include "camera.h"
 #include "diag.h"
 #include "parse.h"
@@ -212,6 +213,9 @@ int main(int argc, char **argv)
 	start = now_seconds();
 	if (!parse_scene_file(&the_scene, opt.scene_path))
 		return 1;
+#if RT_USE_BVH
+	bvh_build(&the_scene);
+#endif
 	parsed = now_seconds();
 	width = opt.width ? opt.width : the_scene.camera.width;
 	height = opt.height ? opt.height : the_scene.camera.height;

@@ -88,6 +88,14 @@ typedef struct {
 	real offset;
 } halfspace;
 
+/* A node of the bounding volume hierarchy (bvh.c). */
+typedef struct {
+	vec3 lo, hi; /* bounds */
+	int start;   /* leaf: first slot in scene.bvh_index; inner: left child (right = start+1) */
+	short count; /* leaf: number of objects; 0 marks an inner node */
+	short axis;  /* inner: the split axis, for front-to-back traversal */
+} bvh_node;
+
 typedef struct {
 	vec3 from, at, up;
 	real angle; /* full horizontal field of view, degrees */
@@ -110,6 +118,15 @@ typedef struct {
 	vec3 vertices[RT_MAX_VERTICES];
 	vec3 normals[RT_MAX_VERTICES];
 	halfspace planes[RT_MAX_PLANES];
+
+#if RT_USE_BVH
+	/* Built by bvh_build after parsing; bvh_node_count 0 means no hierarchy (small
+	 * scenes test every object). bvh_index[0 .. unbounded_count) are objects without
+	 * finite bounds (planes, open polyhedra), tested for every ray. */
+	int bvh_node_count, unbounded_count;
+	bvh_node bvh_nodes[2 * RT_MAX_OBJECTS];
+	int bvh_index[RT_MAX_OBJECTS];
+#endif
 } scene;
 
 /* Clears a scene to NFF's defaults (black background, no ambient, default depth). */

@@ -1,0 +1,357 @@
+/* bvh.c - a bounding volume hierarchy over the scene's objects, in static arrays.
+ * Built once after parsing with the binned surface area heuristic; traversed front to
+ * back with a fixed stack, shrinking the search as hits are found.
+ * See LICENSE for copyright and licence. */
+#include "bvh.h"
+
+#if RT_USE_BVH
+
+#define BINS 16           /* SAH candidate planes per axis, minus one */
+#define MAX_LEAF 4        /* a leaf holds at most this many objects when it can be split */
+#define MAX_BUILD_DEPTH 60 /* deeper nodes become leaves; bounds the traversal stack */
+#define STACK_SIZE (MAX_BUILD_DEPTH + 2)
+
+RT_STATIC_ASSERT(node_count_fits, 2 * (long)RT_MAX_OBJECTS < 2147483647L);
+
+/* Build scratch: each object's bounds and their centre. */
+static vec3 object_lo[RT_MAX_OBJECTS], object_hi[RT_MAX_OBJECTS], centre[RT_MAX_OBJECTS];
+
+static void grow(vec3 *lo, vec3 *hi, vec3 p)
+{
+	lo->x = real_min(lo->x, p.x);
+	lo->y = real_min(lo->y, p.y);
+	lo->z = real_min(lo->z, p.z);
+	hi->x = real_max(hi->x, p.x);
+	hi->y = real_max(hi->y, p.y);
+	hi->z = real_max(hi->z, p.z);
+}
+
+static void empty_box(vec3 *lo, vec3 *hi)
+{
+	*lo = vec_make(REAL_MAX, REAL_MAX, REAL_MAX);
+	*hi = vec_neg(*lo);
+}
+
+/* Corners of a convex polyhedron: every point where three planes meet and that lies
+ * inside all the others. The planes are first closed by a huge box; a corner on that box
+ * means the polyhedron is unbounded (returns 0). */
+static int hedron_bounds(const scene *s, const object *o, vec3 *lo, vec3 *hi)
+{
+	halfspace planes[RT_MAX_HEDRON_PLANES + 6];
+	int count = o->u.hedron.count, i, j, k, m, corners = 0;
+	const real far_away = REAL_C(1e15);
+	for (i = 0; i < count; i++)
+		planes[i] = s->planes[o->u.hedron.first + i];
+	for (i = 0; i < 6; i++) {
+		real sign = i & 1 ? REAL_C(-1.0) : REAL_C(1.0);
+		planes[count + i].normal = vec_make(i / 2 == 0 ? sign : REAL_C(0.0),
+						    i / 2 == 1 ? sign : REAL_C(0.0),
+						    i / 2 == 2 ? sign : REAL_C(0.0));
+		planes[count + i].offset = far_away;
+	}
+	empty_box(lo, hi);
+	for (i = 0; i < count + 6; i++)
+		for (j = i + 1; j < count + 6; j++)
+			for (k = j + 1; k < count + 6; k++) {
+				/* Cramer's rule: p = (d_i (n_j x n_k) + d_j (n_k x n_i) +
+				 * d_k (n_i x n_j)) / (n_i . (n_j x n_k)). */
+				vec3 jk = vec_cross(planes[j].normal, planes[k].normal);
+				real det = vec_dot(planes[i].normal, jk);
+				vec3 p;
+				if (real_fabs(det) < REAL_C(1e-9))
+					continue;
+				p = vec_scale(jk, planes[i].offset);
+				p = vec_madd(p, planes[j].offset,
+					     vec_cross(planes[k].normal, planes[i].normal));
+				p = vec_madd(p, planes[k].offset,
+					     vec_cross(planes[i].normal, planes[j].normal));
+				p = vec_scale(p, real_div(REAL_C(1.0), det));
+				for (m = 0; m < count + 6; m++) {
+					real slack = REAL_C(1e-9) * real_max(REAL_C(1.0), vec_max_abs(p));
+					if (vec_dot(planes[m].normal, p) - planes[m].offset > slack)
+						break;
+				}
+				if (m < count + 6)
+					continue;
+				if (k >= count)
+					return 0; /* a corner on the closing box: unbounded */
+				grow(lo, hi, p);
+				corners++;
+			}
+	return corners > 0;
+}
+
+/* Bounds of one object; returns 0 when it has none (infinite plane, open polyhedron). */
+static int object_bounds(const scene *s, const object *o, vec3 *lo, vec3 *hi)
+{
+	int i;
+	switch (o->kind) {
+	case SHAPE_SPHERE: {
+		real r = o->u.sphere.radius;
+		vec3 extent = vec_make(r, r, r);
+		*lo = vec_sub(o->u.sphere.center, extent);
+		*hi = vec_add(o->u.sphere.center, extent);
+		return 1;
+	}
+	case SHAPE_POLYGON:
+	case SHAPE_PATCH:
+		empty_box(lo, hi);
+		for (i = 0; i < o->u.polygon.count; i++)
+			grow(lo, hi, s->vertices[o->u.polygon.first + i]);
+		return 1;
+	case SHAPE_CONE: {
+		/* Each end circle spans r * sqrt(1 - a_i^2) along axis i. */
+		const cone_shape *c = &o->u.cone;
+		vec3 a = c->axis, apex = vec_madd(c->base, c->length, c->axis);
+		vec3 disc = vec_make(real_sqrt(real_max(REAL_C(0.0), REAL_C(1.0) - real_mul(a.x, a.x))),
+				     real_sqrt(real_max(REAL_C(0.0), REAL_C(1.0) - real_mul(a.y, a.y))),
+				     real_sqrt(real_max(REAL_C(0.0), REAL_C(1.0) - real_mul(a.z, a.z))));
+		empty_box(lo, hi);
+		grow(lo, hi, vec_madd(c->base, c->base_radius, disc));
+		grow(lo, hi, vec_madd(c->base, -c->base_radius, disc));
+		grow(lo, hi, vec_madd(apex, c->apex_radius, disc));
+		grow(lo, hi, vec_madd(apex, -c->apex_radius, disc));
+		return 1;
+	}
+	case SHAPE_HEDRON:
+		return hedron_bounds(s, o, lo, hi);
+	default:
+		return 0;
+	}
+}
+
+static real half_area(vec3 lo, vec3 hi)
+{
+	vec3 d = vec_sub(hi, lo);
+	if (d.x < 0 || d.y < 0 || d.z < 0)
+		return REAL_C(0.0);
+	return real_mul(d.x, d.y) + real_mul(d.y, d.z) + real_mul(d.z, d.x);
+}
+
+/* Chooses the split of index[first .. first+count) with the lowest SAH cost over BINS
+ * bins of centres per axis. Returns the number of objects moved to the left, 0 if
+ * keeping a leaf is cheaper. */
+static int sah_split(scene *s, int first, int count, vec3 node_lo, vec3 node_hi, int *axis_out)
+{
+	int *index = s->bvh_index;
+	vec3 clo, chi;
+	real best_cost, node_area = half_area(node_lo, node_hi);
+	int best_axis = -1, best_plane = 0, axis, i, left;
+	empty_box(&clo, &chi);
+	for (i = 0; i < count; i++)
+		grow(&clo, &chi, centre[index[first + i]]);
+	/* Leaf cost: one intersection per object; a split costs one traversal step plus the
+	 * children's objects weighted by the chance of entering each. */
+	best_cost = real_from_int(count);
+	for (axis = 0; axis < 3; axis++) {
+		real lo = vec_get(clo, axis), extent = vec_get(chi, axis) - lo;
+		int bin_count[BINS];
+		vec3 bin_lo[BINS], bin_hi[BINS], run_lo, run_hi;
+		real right_area[BINS];
+		int right_count[BINS], n;
+		if (!(extent > REAL_C(0.0)))
+			continue;
+		for (i = 0; i < BINS; i++) {
+			bin_count[i] = 0;
+			empty_box(&bin_lo[i], &bin_hi[i]);
+		}
+		for (i = 0; i < count; i++) {
+			int o = index[first + i];
+			int b = (int)(real_div(real_mul(vec_get(centre[o], axis) - lo, real_from_int(BINS)),
+					       extent));
+			b = b < 0 ? 0 : b >= BINS ? BINS - 1 : b;
+			bin_count[b]++;
+			grow(&bin_lo[b], &bin_hi[b], object_lo[o]);
+			grow(&bin_lo[b], &bin_hi[b], object_hi[o]);
+		}
+		/* Sweep from the right, then from the left, pricing each plane between bins. */
+		empty_box(&run_lo, &run_hi);
+		n = 0;
+		for (i = BINS - 1; i > 0; i--) {
+			n += bin_count[i];
+			grow(&run_lo, &run_hi, bin_lo[i]);
+			grow(&run_lo, &run_hi, bin_hi[i]);
+			right_area[i] = half_area(run_lo, run_hi);
+			right_count[i] = n;
+		}
+		empty_box(&run_lo, &run_hi);
+		n = 0;
+		for (i = 0; i < BINS - 1; i++) {
+			real cost;
+			n += bin_count[i];
+			grow(&run_lo, &run_hi, bin_lo[i]);
+			grow(&run_lo, &run_hi, bin_hi[i]);
+			if (n == 0 || right_count[i + 1] == 0)
+				continue;
+			cost = REAL_C(0.5) + real_div(real_mul(half_area(run_lo, run_hi), real_from_int(n)) +
+							      real_mul(right_area[i + 1],
+								       real_from_int(right_count[i + 1])),
+						      node_area);
+			if (cost < best_cost) {
+				best_cost = cost;
+				best_axis = axis;
+				best_plane = i;
+			}
+		}
+	}
+	if (best_axis < 0)
+		return 0;
+	/* Partition: objects whose centre falls in bins 0..best_plane go left. */
+	{
+		real lo = vec_get(clo, best_axis), extent = vec_get(chi, best_axis) - lo;
+		int j = first + count - 1;
+		i = first;
+		while (i <= j) {
+			int b = (int)(real_div(real_mul(vec_get(centre[index[i]], best_axis) - lo,
+							real_from_int(BINS)),
+					       extent));
+			if (b <= best_plane) {
+				i++;
+			} else {
+				int swap = index[i];
+				index[i] = index[j];
+				index[j--] = swap;
+			}
+		}
+		left = i - first;
+	}
+	*axis_out = best_axis;
+	return left > 0 && left < count ? left : 0;
+}
+
+/* Fills node `node` for index[first .. first+count) and recurses into its children.
+ * Recursion depth is at most MAX_BUILD_DEPTH. */
+static void build_node(scene *s, int node, int first, int count, int depth)
+{
+	bvh_node *n = &s->bvh_nodes[node];
+	int i, left = 0, axis = 0;
+	empty_box(&n->lo, &n->hi);
+	for (i = 0; i < count; i++) {
+		grow(&n->lo, &n->hi, object_lo[s->bvh_index[first + i]]);
+		grow(&n->lo, &n->hi, object_hi[s->bvh_index[first + i]]);
+	}
+	if (count > 1 && depth < MAX_BUILD_DEPTH) {
+		left = sah_split(s, first, count, n->lo, n->hi, &axis);
+		/* Too many objects to leave in one leaf, but no cheaper plane (all centres
+		 * equal, say): split the list in half. */
+		if (!left && count > MAX_LEAF) {
+			left = count / 2;
+			axis = 0;
+		}
+	}
+	if (!left) {
+		n->start = first;
+		n->count = (short)count;
+		n->axis = 0;
+		return;
+	}
+	n->start = s->bvh_node_count;
+	n->count = 0;
+	n->axis = (short)axis;
+	s->bvh_node_count += 2;
+	build_node(s, n->start, first, left, depth + 1);
+	build_node(s, n->start + 1, first + left, count - left, depth + 1);
+}
+
+void bvh_build(scene *s)
+{
+	static unsigned char bounded[RT_MAX_OBJECTS];
+	int i, next;
+	s->bvh_node_count = 0;
+	s->unbounded_count = 0;
+	if (s->object_count < RT_BVH_MIN_OBJECTS)
+		return;
+	for (i = 0; i < s->object_count; i++) {
+		vec3 lo, hi;
+		bounded[i] = object_bounds(s, &s->objects[i], &lo, &hi) && vec_is_finite(lo) &&
+			     vec_is_finite(hi);
+		if (bounded[i]) {
+			/* Pad by the secondary-ray offset scale so rounding never loses a hit that
+			 * the object's own test would find. */
+			real pad = real_mul(REAL_OFFSET, real_max(REAL_C(1.0),
+								  real_max(vec_max_abs(lo), vec_max_abs(hi))));
+			vec3 p = vec_make(pad, pad, pad);
+			object_lo[i] = vec_sub(lo, p);
+			object_hi[i] = vec_add(hi, p);
+			centre[i] = vec_scale(vec_add(object_lo[i], object_hi[i]), REAL_C(0.5));
+		} else {
+			s->bvh_index[s->unbounded_count++] = i;
+		}
+	}
+	/* Unbounded objects first, then the bounded ones the tree is built over. */
+	next = s->unbounded_count;
+	for (i = 0; i < s->object_count; i++)
+		if (bounded[i])
+			s->bvh_index[next++] = i;
+	if (next == s->unbounded_count)
+		return;
+	s->bvh_node_count = 1;
+	build_node(s, 0, s->unbounded_count, s->object_count - s->unbounded_count, 0);
+}
+
+/* Slab test: does the ray enter the box before tmax? NaN from 0 * inf (a ray in a slab
+ * plane) fails the comparisons and leaves the interval as it was. */
+static int box_hit(const bvh_node *n, const ray *r, vec3 inv, real tmax)
+{
+	real tnear = REAL_C(0.0), tfar = tmax, t0, t1;
+	t0 = real_mul(n->lo.x - r->origin.x, inv.x);
+	t1 = real_mul(n->hi.x - r->origin.x, inv.x);
+	if (t0 > t1) {
+		real swap = t0;
+		t0 = t1;
+		t1 = swap;
+	}
+	tnear = t0 > tnear ? t0 : tnear;
+	tfar = t1 < tfar ? t1 : tfar;
+	t0 = real_mul(n->lo.y - r->origin.y, inv.y);
+	t1 = real_mul(n->hi.y - r->origin.y, inv.y);
+	if (t0 > t1) {
+		real swap = t0;
+		t0 = t1;
+		t1 = swap;
+	}
+	tnear = t0 > tnear ? t0 : tnear;
+	tfar = t1 < tfar ? t1 : tfar;
+	t0 = real_mul(n->lo.z - r->origin.z, inv.z);
+	t1 = real_mul(n->hi.z - r->origin.z, inv.z);
+	if (t0 > t1) {
+		real swap = t0;
+		t0 = t1;
+		t1 = swap;
+	}
+	tnear = t0 > tnear ? t0 : tnear;
+	tfar = t1 < tfar ? t1 : tfar;
+	return tnear <= tfar;
+}
+
+int bvh_traverse(const scene *s, const ray *r, real *tmax, bvh_visit_fn visit, void *ctx)
+{
+	int stack[STACK_SIZE], top = 0;
+	vec3 inv = vec_make(real_div(REAL_C(1.0), r->dir.x), real_div(REAL_C(1.0), r->dir.y),
+			    real_div(REAL_C(1.0), r->dir.z));
+	int i;
+	for (i = 0; i < s->unbounded_count; i++)
+		if (visit(ctx, s->bvh_index[i], tmax))
+			return 1;
+	if (!s->bvh_node_count)
+		return 0;
+	stack[top++] = 0;
+	while (top > 0) {
+		const bvh_node *n = &s->bvh_nodes[stack[--top]];
+		if (!box_hit(n, r, inv, *tmax))
+			continue;
+		if (n->count) {
+			for (i = 0; i < n->count; i++)
+				if (visit(ctx, s->bvh_index[n->start + i], tmax))
+					return 1;
+		} else {
+			/* Near child on top of the stack: its hits shrink tmax for the far one. */
+			int near_first = vec_get(r->dir, n->axis) >= REAL_C(0.0);
+			stack[top++] = n->start + near_first;
+			stack[top++] = n->start + !near_first;
+		}
+	}
+	return 0;
+}
+
+#endif

@@ -1,0 +1,37 @@
+#!/bin/sh
+# run.sh - runs every test of rt and ends with one line `N passed, N failed`.
+# Called by `make test` after the binaries are built:
+#   unit tests (normal and ASan+UBSan builds), command-line tests, golden renders.
+cd "$(dirname "$0")/.." || exit 1
+passed=0
+failed=0
+
+# Adds a suite's `N passed, N failed` line (the last line of its output) to the totals.
+tally() {
+	name=$1
+	out=$2
+	line=$(printf '%s\n' "$out" | tail -n 1)
+	p=$(printf '%s\n' "$line" | sed -n 's/^\([0-9][0-9]*\) passed, \([0-9][0-9]*\) failed$/\1/p')
+	f=$(printf '%s\n' "$line" | sed -n 's/^\([0-9][0-9]*\) passed, \([0-9][0-9]*\) failed$/\2/p')
+	if [ -z "$p" ]; then
+		printf '%s\n' "$out"
+		echo "$name: did not finish (no summary line)"
+		failed=$((failed + 1))
+		return
+	fi
+	printf '%s\n' "$out" | grep -v '^[0-9]* passed, [0-9]* failed$' | sed "s|^|$name: |"
+	echo "$name: $line"
+	passed=$((passed + p))
+	failed=$((failed + f))
+}
+
+tally unit "$(./build/unit-tests 2>&1)"
+tally unit-sanitized "$(./build/san/unit-tests 2>&1)"
+for script in tests/cli.sh tests/golden.sh; do
+	[ -f "$script" ] || continue
+	name=$(basename "$script" .sh)
+	tally "$name" "$(RT=./rt sh "$script" 2>&1)"
+	tally "$name-sanitized" "$(RT=./build/san/rt sh "$script" 2>&1)"
+done
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
