@@ -4,6 +4,8 @@
  * See LICENSE for copyright and licence. */
 #include "bvh.h"
 
+#include "intersect.h"
+
 #if RT_USE_BVH
 
 #define BINS 16           /* SAH candidate planes per axis, minus one */
@@ -129,8 +131,8 @@ static real half_area(vec3 lo, vec3 hi)
 }
 
 /* Chooses the split of index[first .. first+count) with the lowest SAH cost over BINS
- * bins of centres per axis. Returns the number of objects moved to the left, 0 if
- * keeping a leaf is cheaper. */
+ * bins of centres per axis and partitions the objects by it. Returns the number moved to
+ * the left, or 0 when a leaf is cheaper and small enough, or when all centres coincide. */
 static int sah_split(scene *s, int first, int count, vec3 node_lo, vec3 node_hi, int *axis_out)
 {
 	int *index = s->bvh_index;
@@ -142,7 +144,7 @@ static int sah_split(scene *s, int first, int count, vec3 node_lo, vec3 node_hi,
 		grow(&clo, &chi, centre[index[first + i]]);
 	/* Leaf cost: one intersection per object; a split costs one traversal step plus the
 	 * children's objects weighted by the chance of entering each. */
-	best_cost = real_from_int(count);
+	best_cost = REAL_MAX;
 	for (axis = 0; axis < 3; axis++) {
 		real lo = vec_get(clo, axis), extent = vec_get(chi, axis) - lo;
 		int bin_count[BINS];
@@ -194,7 +196,8 @@ static int sah_split(scene *s, int first, int count, vec3 node_lo, vec3 node_hi,
 			}
 		}
 	}
-	if (best_axis < 0)
+	/* Keep a leaf when that is cheaper, unless it would be too big. */
+	if (best_axis < 0 || (best_cost >= real_from_int(count) && count <= MAX_LEAF))
 		return 0;
 	/* Partition: objects whose centre falls in bins 0..best_plane go left. */
 	{
@@ -225,15 +228,15 @@ static void build_node(scene *s, int node, int first, int count, int depth)
 {
 	bvh_node *n = &s->bvh_nodes[node];
 	int i, left = 0, axis = 0;
-	empty_box(&n->lo, &n->hi);
+	empty_box(&n->bounds[0], &n->bounds[1]);
 	for (i = 0; i < count; i++) {
-		grow(&n->lo, &n->hi, object_lo[s->bvh_index[first + i]]);
-		grow(&n->lo, &n->hi, object_hi[s->bvh_index[first + i]]);
+		grow(&n->bounds[0], &n->bounds[1], object_lo[s->bvh_index[first + i]]);
+		grow(&n->bounds[0], &n->bounds[1], object_hi[s->bvh_index[first + i]]);
 	}
 	if (count > 1 && depth < MAX_BUILD_DEPTH) {
-		left = sah_split(s, first, count, n->lo, n->hi, &axis);
-		/* Too many objects to leave in one leaf, but no cheaper plane (all centres
-		 * equal, say): split the list in half. */
+		left = sah_split(s, first, count, n->bounds[0], n->bounds[1], &axis);
+		/* Too many objects for one leaf but no plane between their centres (all
+		 * centres equal): split the list in half. */
 		if (!left && count > MAX_LEAF) {
 			left = count / 2;
 			axis = 0;
@@ -289,69 +292,125 @@ void bvh_build(scene *s)
 	build_node(s, 0, s->unbounded_count, s->object_count - s->unbounded_count, 0);
 }
 
-/* Slab test: does the ray enter the box before tmax? NaN from 0 * inf (a ray in a slab
- * plane) fails the comparisons and leaves the interval as it was. */
-static int box_hit(const bvh_node *n, const ray *r, vec3 inv, real tmax)
+/* A ray prepared for slab tests: 1/d per axis (IEEE gives +-inf for a zero component)
+ * and, per axis, which box corner it meets first. */
+typedef struct {
+	vec3 origin, inv;
+	int near_x, near_y, near_z; /* 0: the lower bound is entered first, 1: the upper */
+} slab_ray;
+
+/* Does the ray enter node n's box before tmax? *tenter gets where. The comparisons are
+ * written so that NaN from 0 * inf (a ray lying in a slab plane) leaves the interval as
+ * it was instead of poisoning it. */
+static inline int box_hit(const bvh_node *n, const slab_ray *r, real tmax, real *tenter)
 {
-	real tnear = REAL_C(0.0), tfar = tmax, t0, t1;
-	t0 = real_mul(n->lo.x - r->origin.x, inv.x);
-	t1 = real_mul(n->hi.x - r->origin.x, inv.x);
-	if (t0 > t1) {
-		real swap = t0;
-		t0 = t1;
-		t1 = swap;
-	}
-	tnear = t0 > tnear ? t0 : tnear;
-	tfar = t1 < tfar ? t1 : tfar;
-	t0 = real_mul(n->lo.y - r->origin.y, inv.y);
-	t1 = real_mul(n->hi.y - r->origin.y, inv.y);
-	if (t0 > t1) {
-		real swap = t0;
-		t0 = t1;
-		t1 = swap;
-	}
-	tnear = t0 > tnear ? t0 : tnear;
-	tfar = t1 < tfar ? t1 : tfar;
-	t0 = real_mul(n->lo.z - r->origin.z, inv.z);
-	t1 = real_mul(n->hi.z - r->origin.z, inv.z);
-	if (t0 > t1) {
-		real swap = t0;
-		t0 = t1;
-		t1 = swap;
-	}
-	tnear = t0 > tnear ? t0 : tnear;
-	tfar = t1 < tfar ? t1 : tfar;
+	real tnear = REAL_C(0.0), tfar = tmax;
+	real x0 = real_mul(n->bounds[r->near_x].x - r->origin.x, r->inv.x);
+	real x1 = real_mul(n->bounds[!r->near_x].x - r->origin.x, r->inv.x);
+	real y0 = real_mul(n->bounds[r->near_y].y - r->origin.y, r->inv.y);
+	real y1 = real_mul(n->bounds[!r->near_y].y - r->origin.y, r->inv.y);
+	real z0 = real_mul(n->bounds[r->near_z].z - r->origin.z, r->inv.z);
+	real z1 = real_mul(n->bounds[!r->near_z].z - r->origin.z, r->inv.z);
+	tnear = x0 > tnear ? x0 : tnear;
+	tnear = y0 > tnear ? y0 : tnear;
+	tnear = z0 > tnear ? z0 : tnear;
+	tfar = x1 < tfar ? x1 : tfar;
+	tfar = y1 < tfar ? y1 : tfar;
+	tfar = z1 < tfar ? z1 : tfar;
+	*tenter = tnear;
 	return tnear <= tfar;
 }
 
-int bvh_traverse(const scene *s, const ray *r, real *tmax, bvh_visit_fn visit, void *ctx)
+/* The two queries share one traversal; `shadow` is a constant at each call, so the
+ * compiler makes two specialised copies. Nearest: the closest hit, shrinking tmax as hits
+ * are found, children visited nearest first. Shadow: the product of the kt of every
+ * transmitting object crossed, stopping at the first opaque one (*found gets it, or -1). */
+static inline real traverse(const scene *s, const ray *r, real tmax, hit *h, int shadow,
+			    int *found)
 {
-	int stack[STACK_SIZE], top = 0;
-	vec3 inv = vec_make(real_div(REAL_C(1.0), r->dir.x), real_div(REAL_C(1.0), r->dir.y),
-			    real_div(REAL_C(1.0), r->dir.z));
-	int i;
+	struct {
+		int node;
+		real enter;
+	} stack[STACK_SIZE];
+	int top = 0, i;
+	real pass = REAL_C(1.0), enter, enter0, enter1;
+	slab_ray sr;
+
+	*found = shadow ? -1 : 0;
+	/* Visits object `o`: returns 1 when the search is over (an opaque shadow blocker). */
+#define VISIT(o)                                                                              \
+	do {                                                                                  \
+		int visit_ = (o);                                                             \
+		if (shadow) {                                                                 \
+			if (object_intersect(s, visit_, r, REAL_C(0.0), tmax, NULL)) {       \
+				real kt_ = s->materials[s->objects[visit_].material].kt;    \
+				if (kt_ <= REAL_C(0.0)) {                                     \
+					*found = visit_;                                      \
+					return REAL_C(0.0);                                   \
+				}                                                             \
+				pass = real_mul(pass, kt_);                                   \
+			}                                                                     \
+		} else if (object_intersect(s, visit_, r, REAL_C(0.0), tmax, h)) {           \
+			tmax = h->t;                                                          \
+			h->object = visit_;                                                   \
+			*found = 1;                                                           \
+		}                                                                             \
+	} while (0)
+
 	for (i = 0; i < s->unbounded_count; i++)
-		if (visit(ctx, s->bvh_index[i], tmax))
-			return 1;
-	if (!s->bvh_node_count)
-		return 0;
-	stack[top++] = 0;
+		VISIT(s->bvh_index[i]);
+	sr.origin = r->origin;
+	sr.inv = vec_make(real_div(REAL_C(1.0), r->dir.x), real_div(REAL_C(1.0), r->dir.y),
+			  real_div(REAL_C(1.0), r->dir.z));
+	sr.near_x = sr.inv.x < REAL_C(0.0);
+	sr.near_y = sr.inv.y < REAL_C(0.0);
+	sr.near_z = sr.inv.z < REAL_C(0.0);
+	if (s->bvh_node_count && box_hit(&s->bvh_nodes[0], &sr, tmax, &enter)) {
+		stack[0].node = 0;
+		stack[0].enter = enter;
+		top = 1;
+	}
 	while (top > 0) {
-		const bvh_node *n = &s->bvh_nodes[stack[--top]];
-		if (!box_hit(n, r, inv, *tmax))
+		const bvh_node *n;
+		top--;
+		/* A nearer hit found since this node was pushed may make it pointless. */
+		if (!shadow && stack[top].enter > tmax)
 			continue;
+		n = &s->bvh_nodes[stack[top].node];
 		if (n->count) {
 			for (i = 0; i < n->count; i++)
-				if (visit(ctx, s->bvh_index[n->start + i], tmax))
-					return 1;
+				VISIT(s->bvh_index[n->start + i]);
 		} else {
-			/* Near child on top of the stack: its hits shrink tmax for the far one. */
-			int near_first = vec_get(r->dir, n->axis) >= REAL_C(0.0);
-			stack[top++] = n->start + near_first;
-			stack[top++] = n->start + !near_first;
+			/* Test both children here and push only those the ray enters, the
+			 * nearer one last so that it is searched first. */
+			int hit0 = box_hit(&s->bvh_nodes[n->start], &sr, tmax, &enter0);
+			int hit1 = box_hit(&s->bvh_nodes[n->start + 1], &sr, tmax, &enter1);
+			if (hit0 && hit1) {
+				int near = enter0 <= enter1 ? 0 : 1;
+				stack[top].node = n->start + !near;
+				stack[top++].enter = near ? enter0 : enter1;
+				stack[top].node = n->start + near;
+				stack[top++].enter = near ? enter1 : enter0;
+			} else if (hit0 || hit1) {
+				stack[top].node = n->start + (hit0 ? 0 : 1);
+				stack[top++].enter = hit0 ? enter0 : enter1;
+			}
 		}
 	}
-	return 0;
+#undef VISIT
+	return pass;
+}
+
+int bvh_nearest(const scene *s, const ray *r, real tmax, hit *h)
+{
+	int found;
+	(void)traverse(s, r, tmax, h, 0, &found);
+	return found;
+}
+
+real bvh_transmittance(const scene *s, const ray *r, real tmax, int *blocker)
+{
+	return traverse(s, r, tmax, NULL, 1, blocker);
 }
 
 #endif

@@ -11,12 +11,13 @@
  * get none (bvh_node_count = 0) and are searched object by object. */
 void bvh_build(scene *s);
 
-/* Called for each object whose bounds the ray enters before *tmax, nearest boxes first.
- * It may lower *tmax (a nearer hit) and returns 1 to stop the traversal. */
-typedef int (*bvh_visit_fn)(void *ctx, int index, real *tmax);
+/* Nearest hit along r over (0, tmax), through the hierarchy (and the unbounded objects);
+ * fills h (normals not yet faced to the ray) and h->object. */
+int bvh_nearest(const scene *s, const ray *r, real tmax, hit *h);
 
-/* Visits the candidate objects for r over (0, *tmax); returns 1 if a visit stopped it. */
-int bvh_traverse(const scene *s, const ray *r, real *tmax, bvh_visit_fn visit, void *ctx);
+/* Light passing along r over (0, tmax): 0 at an opaque blocker, else the product of the
+ * kt of the transmitting objects crossed; *blocker gets the opaque blocker, or -1. */
+real bvh_transmittance(const scene *s, const ray *r, real tmax, int *blocker);
 #endif
 
 #endif

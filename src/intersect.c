@@ -36,83 +36,50 @@ static void face_forward(const ray *r, hit *h)
 		h->shading = vec_neg(h->shading);
 }
 
-/* Nearest-hit search state shared with the hierarchy's visitor. */
-typedef struct {
-	const scene *s;
-	const ray *r;
-	hit *h;
-	int found;
-} nearest_search;
-
-static int visit_nearest(void *ctx, int index, real *tmax)
-{
-	nearest_search *q = ctx;
-	/* Each hit shrinks tmax, so later objects only report nearer hits. */
-	if (object_intersect(q->s, index, q->r, REAL_C(0.0), *tmax, q->h)) {
-		*tmax = q->h->t;
-		q->h->object = index;
-		q->found = 1;
-	}
-	return 0;
-}
-
-/* Shadow search state: the light passed so far. */
-typedef struct {
-	const scene *s;
-	const ray *r;
-	real pass;
-} shadow_search;
-
-static int visit_shadow(void *ctx, int index, real *tmax)
-{
-	shadow_search *q = ctx;
-	if (object_intersect(q->s, index, q->r, REAL_C(0.0), *tmax, NULL)) {
-		real kt = q->s->materials[q->s->objects[index].material].kt;
-		/* Stop at the first opaque blocker: nothing else can change the answer. */
-		if (kt <= REAL_C(0.0)) {
-			q->pass = REAL_C(0.0);
-			return 1;
-		}
-		q->pass = real_mul(q->pass, kt);
-	}
-	return 0;
-}
-
-/* Visits every candidate object: through the hierarchy when the scene has one, else
- * all of them in order. Returns 1 if a visit stopped the search. */
-static int visit_objects(const scene *s, const ray *r, real *tmax,
-			 int (*visit)(void *, int, real *), void *ctx)
-{
-	int i;
-#if RT_USE_BVH
-	if (s->bvh_node_count)
-		return bvh_traverse(s, r, tmax, visit, ctx);
-#endif
-	for (i = 0; i < s->object_count; i++)
-		if (visit(ctx, i, tmax))
-			return 1;
-	return 0;
-}
-
 int scene_intersect(const scene *s, const ray *r, real tmax, hit *h)
 {
-	nearest_search q;
-	q.s = s;
-	q.r = r;
-	q.h = h;
-	q.found = 0;
-	visit_objects(s, r, &tmax, visit_nearest, &q);
-	if (q.found)
+	int i, found = 0;
+#if RT_USE_BVH
+	if (s->bvh_node_count) {
+		found = bvh_nearest(s, r, tmax, h);
+	} else
+#endif
+	{
+		for (i = 0; i < s->object_count; i++) {
+			/* Each hit shrinks tmax, so later objects only report nearer hits. */
+			if (object_intersect(s, i, r, REAL_C(0.0), tmax, h)) {
+				tmax = h->t;
+				h->object = i;
+				found = 1;
+			}
+		}
+	}
+	if (found)
 		face_forward(r, h);
-	return q.found;
+	return found;
 }
 
-real scene_transmittance(const scene *s, const ray *r, real tmax)
+real scene_transmittance(const scene *s, const ray *r, real tmax, int *blocker)
 {
-	shadow_search q;
-	q.s = s;
-	q.r = r;
-	q.pass = REAL_C(1.0);
-	visit_objects(s, r, &tmax, visit_shadow, &q);
-	return q.pass;
+	real pass = REAL_C(1.0);
+	int i, unused;
+	if (!blocker)
+		blocker = &unused;
+	*blocker = -1;
+#if RT_USE_BVH
+	if (s->bvh_node_count)
+		return bvh_transmittance(s, r, tmax, blocker);
+#endif
+	for (i = 0; i < s->object_count; i++) {
+		if (object_intersect(s, i, r, REAL_C(0.0), tmax, NULL)) {
+			real kt = s->materials[s->objects[i].material].kt;
+			/* Stop at the first opaque blocker: nothing else can change the answer. */
+			if (kt <= REAL_C(0.0)) {
+				*blocker = i;
+				return REAL_C(0.0);
+			}
+			pass = real_mul(pass, kt);
+		}
+	}
+	return pass;
 }

@@ -13,7 +13,8 @@ int object_intersect(const scene *s, int index, const ray *r, real tmin, real tm
 int scene_intersect(const scene *s, const ray *r, real tmax, hit *h);
 
 /* Fraction of light that passes along r over (0, tmax): 0 at the first opaque blocker,
- * else the product of the kt of the transmitting objects crossed. */
-real scene_transmittance(const scene *s, const ray *r, real tmax);
+ * else the product of the kt of the transmitting objects crossed. *blocker (if not NULL)
+ * gets the opaque blocker's index, or -1. */
+real scene_transmittance(const scene *s, const ray *r, real tmax, int *blocker);
 
 #endif

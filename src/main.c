@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -136,6 +137,19 @@ typedef struct {
 	int is_temp;
 } output;
 
+/* mkstemp creates the file private (0600); the image should get the mode a plain fopen
+ * gives: the replaced file's own, or 0666 less the umask for a new one. */
+static mode_t output_mode(const char *path)
+{
+	struct stat st;
+	mode_t mask;
+	if (stat(path, &st) == 0 && S_ISREG(st.st_mode))
+		return st.st_mode & 07777;
+	mask = umask(0);
+	umask(mask);
+	return 0666 & ~mask;
+}
+
 static int output_open(output *out, const char *path)
 {
 	int fd;
@@ -150,6 +164,8 @@ static int output_open(output *out, const char *path)
 		return 0;
 	}
 	fd = mkstemp(out->temp_path);
+	if (fd >= 0)
+		(void)fchmod(fd, output_mode(path));
 	if (fd < 0 || !(out->file = fdopen(fd, "wb"))) {
 		diag_error(path, 0, "cannot create a temporary file beside it: %s", strerror(errno));
 		if (fd >= 0) {

@@ -11,6 +11,7 @@
 
 #include "diag.h"
 #include "image.h"
+#include "shape.h"
 
 /* ---- lexer --------------------------------------------------------------------- */
 
@@ -74,12 +75,19 @@ static int check_start(lexer *lx)
 		d = next_byte(lx);
 		if ((c == 0xFF && d == 0xFE) || (c == 0xFE && d == 0xFF))
 			return fail(lx, 1, "the file is UTF-16 text; save it as ASCII or UTF-8");
-		lx->pending = d;
+		/* Only one byte can be given back, and c is no text byte anyway: report it
+		 * here (a newline in d would otherwise move the error to line 2). */
+		return fail(lx, 1, "unexpected byte 0x%02X (this is not a text scene file)",
+			    (unsigned)c);
 	} else if (c == 0xEF) {
 		if (next_byte(lx) == 0xBB && next_byte(lx) == 0xBF)
 			return 1;
 		return fail(lx, 1, "unexpected bytes at the start of the file");
 	}
+	/* Give the byte back; a newline is counted again when reread (as in next_token),
+	 * else a file starting with a blank line reports every line one too far. */
+	if (c == '\n')
+		lx->line--;
 	lx->pending = c;
 	return 1;
 }
@@ -363,6 +371,9 @@ static int parse_material(parser *p)
 {
 	material m;
 	int index;
+	/* intern_material compares whole structs with memcmp: clear the padding too (a long
+	 * double carries 6 bytes of it), or identical `f` lines may not share. */
+	memset(&m, 0, sizeof m);
 	if (!read_vec(&p->lx, "a number (material colour)", &m.color) ||
 	    !read_number(&p->lx, "a number (material Kd)", &m.kd) ||
 	    !read_number(&p->lx, "a number (material Ks)", &m.ks) ||
@@ -483,6 +494,8 @@ static int parse_polygon(parser *p, int patch)
 	poly->axis = real_fabs(poly->normal.x) > real_fabs(poly->normal.y)
 			     ? (real_fabs(poly->normal.x) > real_fabs(poly->normal.z) ? 0 : 2)
 			     : (real_fabs(poly->normal.y) > real_fabs(poly->normal.z) ? 1 : 2);
+	for (i = 0; i < count; i++)
+		s->projected[first + i] = polygon_project(s->vertices[first + i], poly->axis);
 	if (patch) {
 		/* A zero vertex normal falls back to the face normal. */
 		for (i = 0; i < count; i++) {

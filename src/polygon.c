@@ -5,33 +5,49 @@
  * See LICENSE for copyright and licence. */
 #include "shape.h"
 
-int polygon_contains(const vec3 *vertices, int count, int axis, real pu, real pv)
+vec2 polygon_project(vec3 p, int axis)
 {
-	int u_axis = (axis + 1) % 3, v_axis = (axis + 2) % 3;
-	int inside = 0, i;
+	vec2 q;
+	q.u = axis == 0 ? p.y : axis == 1 ? p.z : p.x;
+	q.v = axis == 0 ? p.z : axis == 1 ? p.x : p.y;
+	return q;
+}
 
-	for (i = 0; i < count; i++) {
-		vec3 a = vertices[i], b = vertices[i + 1 == count ? 0 : i + 1];
-		real lo_u = vec_get(a, u_axis), lo_v = vec_get(a, v_axis);
-		real hi_u = vec_get(b, u_axis), hi_v = vec_get(b, v_axis);
+int polygon_contains_2d(const vec2 *uv, int count, real pu, real pv)
+{
+	int inside = 0, i;
+	vec2 a = uv[count - 1];
+
+	for (i = 0; i < count; a = uv[i++]) {
+		vec2 lo = a, hi = uv[i];
+		/* Half-open in v: the edge counts when its ends lie on different sides of
+		 * v = pv, an end exactly on it counting as above. Most edges stop here. */
+		if ((lo.v >= pv) == (hi.v >= pv))
+			continue;
 		/* Canonical order (by v, then u): both neighbours of an edge see the same
 		 * endpoints in the same order and so round the same way. */
-		if (hi_v < lo_v || (hi_v == lo_v && hi_u < lo_u)) {
-			real su = lo_u, sv = lo_v;
-			lo_u = hi_u;
-			lo_v = hi_v;
-			hi_u = su;
-			hi_v = sv;
+		if (hi.v < lo.v || (hi.v == lo.v && hi.u < lo.u)) {
+			vec2 swap = lo;
+			lo = hi;
+			hi = swap;
 		}
-		/* Half-open in v: the edge counts when lo_v < pv <= hi_v. */
-		if (!(lo_v < pv && pv <= hi_v))
-			continue;
 		/* Does the edge cross the +u ray from the point, i.e. is its u-intercept >= pu?
-		 * Written without a division: hi_v - lo_v > 0 here. */
-		if (real_mul(pv - lo_v, hi_u - lo_u) >= real_mul(pu - lo_u, hi_v - lo_v))
+		 * Written without a division: hi.v - lo.v > 0 here. */
+		if (real_mul(pv - lo.v, hi.u - lo.u) >= real_mul(pu - lo.u, hi.v - lo.v))
 			inside = !inside;
 	}
 	return inside;
+}
+
+int polygon_contains(const vec3 *vertices, int count, int axis, real pu, real pv)
+{
+	vec2 uv[RT_MAX_POLY_VERTS];
+	int i;
+	if (count < 1 || count > RT_MAX_POLY_VERTS)
+		return 0;
+	for (i = 0; i < count; i++)
+		uv[i] = polygon_project(vertices[i], axis);
+	return polygon_contains_2d(uv, count, pu, pv);
 }
 
 /* Signed area weight of triangle (a, b, c) about the plane normal n. */
@@ -82,9 +98,11 @@ int polygon_intersect(const scene *s, const object *o, const ray *r, real tmin, 
 	if (!(t > tmin && t < tmax))
 		return 0;
 	p = vec_madd(r->origin, t, r->dir);
-	if (!polygon_contains(s->vertices + poly->first, poly->count, poly->axis,
-			      vec_get(p, (poly->axis + 1) % 3), vec_get(p, (poly->axis + 2) % 3)))
-		return 0;
+	{
+		vec2 q = polygon_project(p, poly->axis);
+		if (!polygon_contains_2d(s->projected + poly->first, poly->count, q.u, q.v))
+			return 0;
+	}
 	if (h) {
 		h->t = t;
 		h->point = p;

@@ -88,9 +88,14 @@ typedef struct {
 	real offset;
 } halfspace;
 
+/* A polygon vertex projected to its plane's 2D coordinates (see polygon_shape.axis). */
+typedef struct {
+	real u, v;
+} vec2;
+
 /* A node of the bounding volume hierarchy (bvh.c). */
 typedef struct {
-	vec3 lo, hi; /* bounds */
+	vec3 bounds[2]; /* lower and upper corner */
 	int start;   /* leaf: first slot in scene.bvh_index; inner: left child (right = start+1) */
 	short count; /* leaf: number of objects; 0 marks an inner node */
 	short axis;  /* inner: the split axis, for front-to-back traversal */
@@ -117,6 +122,7 @@ typedef struct {
 	object objects[RT_MAX_OBJECTS];
 	vec3 vertices[RT_MAX_VERTICES];
 	vec3 normals[RT_MAX_VERTICES];
+	vec2 projected[RT_MAX_VERTICES]; /* vertices projected for the point-in-polygon test */
 	halfspace planes[RT_MAX_PLANES];
 
 #if RT_USE_BVH

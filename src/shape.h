@@ -30,9 +30,16 @@ int hedron_intersect(const scene *s, const object *o, const ray *r, real tmin, r
 		     hit *h);
 int plane_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h);
 
-/* Crossings test (half-open rule, canonical edge order): is (pu, pv) inside the
- * polygon's projection that drops coordinate `axis`? Exposed for the tests. */
+/* Crossings test (half-open rule, canonical edge order): is (pu, pv) inside the polygon
+ * with 2D vertices uv[0 .. count)? */
+int polygon_contains_2d(const vec2 *uv, int count, real pu, real pv);
+
+/* The same for 3D vertices projected by dropping coordinate `axis` (u = axis+1, v = axis+2,
+ * mod 3), as the parser projects them; at most RT_MAX_POLY_VERTS vertices. */
 int polygon_contains(const vec3 *vertices, int count, int axis, real pu, real pv);
+
+/* The 2D coordinates of p in the projection that drops `axis`. */
+vec2 polygon_project(vec3 p, int axis);
 
 /* Solves a t^2 + 2 b t + c = 0 for its roots t0 <= t1 without cancellation
  * (Press et al.: q = -(b + sign(b) sqrt(b^2 - a c)), t0 = c/q, t1 = q/a), given the

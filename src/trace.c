@@ -27,6 +27,8 @@ void tracer_init(tracer *t, const scene *s, int depth, real cutoff)
 	t->cutoff = cutoff;
 	t->stats.eye_rays = t->stats.eye_hits = 0;
 	t->stats.shadow_rays = t->stats.reflect_rays = t->stats.refract_rays = 0;
+	for (i = 0; i < RT_MAX_DEPTH * RT_MAX_LIGHTS; i++)
+		t->last_blocker[i / RT_MAX_LIGHTS][i % RT_MAX_LIGHTS] = -1;
 	/* The eye may sit inside glass: find the closed transmitting objects around it by
 	 * asking whether a ray from the eye leaves each of them (an exit hit). */
 	t->eye_media.count = 0;
@@ -84,7 +86,8 @@ static vec3 trace_ray(tracer *t, const ray *r, int level, real weight, const med
 		      int *hit_object);
 
 /* Diffuse and highlight from every light the surface faces, through shadow rays. */
-static vec3 shade_lights(tracer *t, const hit *h, const material *mat, vec3 mirror_dir)
+static vec3 shade_lights(tracer *t, const hit *h, const material *mat, vec3 mirror_dir,
+			 int level)
 {
 	const scene *s = t->scene;
 	vec3 sum = vec_mul(s->ambient, mat->color);
@@ -113,7 +116,13 @@ static vec3 shade_lights(tracer *t, const hit *h, const material *mat, vec3 mirr
 		shadow.origin = trace_offset(h->point, h->normal, h->t);
 		shadow.dir = dir;
 		t->stats.shadow_rays++;
-		pass = scene_transmittance(s, &shadow, distance);
+		{
+			int *cached = &t->last_blocker[level - 1][i];
+			if (*cached >= 0 &&
+			    object_intersect(s, *cached, &shadow, REAL_C(0.0), distance, NULL))
+				continue;
+			pass = scene_transmittance(s, &shadow, distance, cached);
+		}
 		if (pass <= REAL_C(0.0))
 			continue;
 		sum = vec_add(sum, vec_scale(vec_mul(l->color, vec_madd(vec_make(highlight, highlight,
@@ -188,7 +197,7 @@ static vec3 trace_ray(tracer *t, const ray *r, int level, real weight, const med
 	if (vec_dot(mirror_dir, h.normal) <= REAL_C(0.0))
 		mirror_dir = optics_reflect(r->dir, h.normal);
 
-	color = shade_lights(t, &h, mat, mirror_dir);
+	color = shade_lights(t, &h, mat, mirror_dir, level);
 	ks = real_min(mat->ks, MIRROR_MAX);
 	if (ks > REAL_C(0.0) && level < t->depth && real_mul(weight, ks) >= t->cutoff)
 		color = vec_add(color, trace_mirror(t, &h, mirror_dir, level, weight, ks, m));

@@ -23,6 +23,9 @@ typedef struct {
 	real cutoff; /* smallest path weight still traced */
 	trace_stats stats;
 	media eye_media; /* what the eye is inside of */
+	/* The opaque object that last blocked each light at each ray level, tried first:
+	 * neighbouring shadow rays usually share their blocker. -1 when none. */
+	int last_blocker[RT_MAX_DEPTH][RT_MAX_LIGHTS];
 } tracer;
 
 void tracer_init(tracer *t, const scene *s, int depth, real cutoff);
