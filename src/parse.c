@@ -207,7 +207,7 @@ typedef struct {
 	lexer lx;
 	scene *s;
 	int material;     /* current material index, -1 before the first `f` */
-	real absorb;      /* absorption for the next `f` */
+	vec3 absorb;      /* absorption for the next `f` */
 	int view_line;    /* line of `v`, 0 if none yet */
 	int unlit_lights; /* lights given without a colour */
 	int light_has_color[RT_MAX_LIGHTS];
@@ -334,6 +334,20 @@ static int parse_view(parser *p)
 	return 1;
 }
 
+/* Does a number follow on line `line`? Peeks without consuming; an error (reported)
+ * returns -1. NFF's optional light colour is told apart this way. */
+static int number_follows_on(parser *p, int line)
+{
+	char *end;
+	if (!next_token(&p->lx))
+		return p->lx.failed ? -1 : (push_back(&p->lx), 0);
+	push_back(&p->lx);
+	if (p->lx.tok_line != line)
+		return 0;
+	(void)real_parse(p->lx.tok, &end);
+	return end != p->lx.tok && *end == '\0';
+}
+
 static int parse_light(parser *p)
 {
 	scene *s = p->s;
@@ -345,22 +359,12 @@ static int parse_light(parser *p)
 	if (!read_vec(&p->lx, "a number (light position)", &l->position))
 		return 0;
 	/* The colour is optional: present when a number follows on the same line. */
-	p->light_has_color[s->light_count] = 0;
-	if (next_token(&p->lx)) {
-		char *end;
-		int same_line = p->lx.tok_line == line;
-		(void)real_parse(p->lx.tok, &end);
-		push_back(&p->lx);
-		if (same_line && end != p->lx.tok && *end == '\0') {
-			if (!read_vec(&p->lx, "a number (light colour)", &l->color))
-				return 0;
-			p->light_has_color[s->light_count] = 1;
-		}
-	} else if (p->lx.failed) {
+	p->light_has_color[s->light_count] = number_follows_on(p, line);
+	if (p->light_has_color[s->light_count] < 0)
 		return 0;
-	} else {
-		push_back(&p->lx);
-	}
+	if (p->light_has_color[s->light_count] &&
+	    !read_vec(&p->lx, "a number (light colour)", &l->color))
+		return 0;
 	if (!p->light_has_color[s->light_count])
 		p->unlit_lights++;
 	s->light_count++;
@@ -395,7 +399,7 @@ static int parse_material(parser *p)
 		m.ior = REAL_C(1.0);
 	m.color = image_srgb_to_linear(m.color);
 	m.absorb = p->absorb;
-	p->absorb = REAL_C(0.0);
+	p->absorb = vec_make(REAL_C(0.0), REAL_C(0.0), REAL_C(0.0));
 	index = intern_material(p, &m);
 	if (index < 0)
 		return 0;
@@ -654,9 +658,21 @@ static int parse_settings(parser *p, const char *name)
 	if (strcmp(name, "ambient") == 0)
 		return read_vec(&p->lx, "a number (ambient colour)", &s->ambient);
 	if (strcmp(name, "absorb") == 0) {
-		if (!read_number(&p->lx, "a number (absorption coefficient)", &p->absorb))
+		/* `absorb a` (grey) or `absorb ar ag ab` (per channel, on one line). */
+		int line = p->lx.tok_line, per_channel;
+		real a;
+		if (!read_number(&p->lx, "a number (absorption coefficient)", &a))
 			return 0;
-		if (p->absorb < REAL_C(0.0))
+		p->absorb = vec_make(a, a, a);
+		per_channel = number_follows_on(p, line);
+		if (per_channel < 0)
+			return 0;
+		if (per_channel && (!read_number(&p->lx, "a number (absorption coefficient)",
+						 &p->absorb.y) ||
+				    !read_number(&p->lx, "a number (absorption coefficient)",
+						 &p->absorb.z)))
+			return 0;
+		if (p->absorb.x < 0 || p->absorb.y < 0 || p->absorb.z < 0)
 			return fail(&p->lx, p->lx.tok_line,
 				    "absorption coefficient must not be negative, got %s", p->lx.tok);
 		return 1;

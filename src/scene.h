@@ -15,7 +15,7 @@ typedef struct {
 	real shine;   /* Phong exponent */
 	real kt;      /* weight of the refracted ray; > 0 makes the object two-sided */
 	real ior;     /* index of refraction relative to the outside; used only when kt > 0 */
-	real absorb;  /* Beer-Lambert coefficient inside the object, per scene unit */
+	vec3 absorb;  /* Beer-Lambert coefficient per channel inside the object, per scene unit */
 } material;
 
 typedef struct {

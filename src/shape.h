@@ -1,6 +1,7 @@
 /* shape.h - rays, hit records and the one intersection contract every shape follows.
  * Each shape_intersect returns 1 on a hit with tmin < t < tmax, else 0; when `h` is
  * not NULL it fills t, the hit point and the outward geometric and shading normals.
+ * A NULL `h` marks a shadow query: one-sided surfaces then block light from both sides.
  * Facing the normals toward the ray happens once, in intersect.c.
  * See LICENSE for copyright and licence. */
 #ifndef RT_SHAPE_H

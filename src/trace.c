@@ -174,7 +174,9 @@ static vec3 trace_ray(tracer *t, const ray *r, int level, real weight, const med
 		      int *hit_object)
 {
 	const scene *s = t->scene;
-	real absorb = m->count ? s->materials[m->material[m->count - 1]].absorb : REAL_C(0.0);
+	const vec3 *absorb = m->count ? &s->materials[m->material[m->count - 1]].absorb : NULL;
+	int absorbing = absorb && (absorb->x > REAL_C(0.0) || absorb->y > REAL_C(0.0) ||
+				   absorb->z > REAL_C(0.0));
 	const material *mat;
 	vec3 color, mirror_dir;
 	real ks;
@@ -184,8 +186,7 @@ static vec3 trace_ray(tracer *t, const ray *r, int level, real weight, const med
 		if (hit_object)
 			*hit_object = -1;
 		/* A ray that never leaves an absorbing medium is absorbed completely. */
-		return absorb > REAL_C(0.0) ? vec_make(REAL_C(0.0), REAL_C(0.0), REAL_C(0.0))
-					    : s->background;
+		return absorbing ? vec_make(REAL_C(0.0), REAL_C(0.0), REAL_C(0.0)) : s->background;
 	}
 	if (hit_object)
 		*hit_object = h.object;
@@ -203,8 +204,9 @@ static vec3 trace_ray(tracer *t, const ray *r, int level, real weight, const med
 		color = vec_add(color, trace_mirror(t, &h, mirror_dir, level, weight, ks, m));
 	if (mat->kt > REAL_C(0.0) && level < t->depth && real_mul(weight, mat->kt) >= t->cutoff)
 		color = vec_add(color, trace_refraction(t, r, &h, mat, level, weight, m));
-	if (absorb > REAL_C(0.0))
-		color = vec_scale(color, optics_beer(absorb, h.t));
+	if (absorbing)
+		color = vec_mul(color, vec_make(optics_beer(absorb->x, h.t), optics_beer(absorb->y, h.t),
+						optics_beer(absorb->z, h.t)));
 	return color;
 }
 
