@@ -47,8 +47,30 @@ build/san/unit-tests: $(SRC) $(TEST_SRC) $(wildcard src/*.h tests/*.h)
 	@mkdir -p $(@D)
 	$(CC) $(RT_CFLAGS) $(SAN_FLAGS) -Isrc $(CPPFLAGS) -O1 -o $@ $(LIB_SRC) $(TEST_SRC) $(LDLIBS) $(RT_LDLIBS)
 
-test: rt build/unit-tests build/san/rt build/san/unit-tests
+build/san/replay: $(LIB_SRC) tests/fuzz/fuzz_scene.c tests/fuzz/replay.c $(wildcard src/*.h)
+	@mkdir -p $(@D)
+	$(CC) $(RT_CFLAGS) $(SAN_FLAGS) -Isrc $(CPPFLAGS) -O1 -o $@ $(LIB_SRC) tests/fuzz/fuzz_scene.c tests/fuzz/replay.c $(LDLIBS) $(RT_LDLIBS)
+
+test: rt build/unit-tests build/san/rt build/san/unit-tests build/san/replay
 	@sh tests/run.sh
+
+# Fuzzing with libFuzzer (clang): `make fuzz FUZZ_SECONDS=600`. New inputs collect in
+# build/fuzz/new; `make fuzz-merge` minimises them into tests/fuzz/corpus.
+FUZZ_SECONDS ?= 60
+FUZZ_CC ?= clang
+FUZZ_FLAGS = -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined -g -O1
+build/fuzz/fuzz-scene: $(LIB_SRC) tests/fuzz/fuzz_scene.c $(wildcard src/*.h)
+	@command -v $(FUZZ_CC) >/dev/null || { apt-get update && apt-get install -y clang; }
+	@mkdir -p $(@D)
+	$(FUZZ_CC) -std=c99 -Wall -Wextra -Werror -ffp-contract=off $(FUZZ_FLAGS) -Isrc -o $@ $(LIB_SRC) tests/fuzz/fuzz_scene.c -lm
+
+fuzz: build/fuzz/fuzz-scene
+	@mkdir -p build/fuzz/new build/fuzz/crashes
+	build/fuzz/fuzz-scene -max_total_time=$(FUZZ_SECONDS) -max_len=65536 -timeout=10 \
+		-artifact_prefix=build/fuzz/crashes/ -dict=tests/fuzz/nff.dict build/fuzz/new tests/fuzz/corpus
+
+fuzz-merge: build/fuzz/fuzz-scene
+	build/fuzz/fuzz-scene -merge=1 -max_len=65536 tests/fuzz/corpus build/fuzz/new
 
 install: rt
 	mkdir -p $(DESTDIR)$(BINDIR)
@@ -61,6 +83,6 @@ uninstall:
 clean:
 	rm -rf build rt
 
-.PHONY: all test install uninstall clean
+.PHONY: all test install uninstall clean fuzz fuzz-merge
 
 -include $(OBJ:.o=.d) $(TEST_OBJ:.o=.d)

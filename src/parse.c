@@ -652,6 +652,18 @@ static int parse_plane(parser *p)
 	return 1;
 }
 
+/* One absorption coefficient, checked while lx.tok still holds it: the look-ahead for
+ * more numbers moves the current token on (to the next line, or to end of file). */
+static int read_absorption(parser *p, real *out)
+{
+	if (!read_number(&p->lx, "a number (absorption coefficient)", out))
+		return 0;
+	if (*out < REAL_C(0.0))
+		return fail(&p->lx, p->lx.tok_line,
+			    "absorption coefficient must not be negative, got %s", p->lx.tok);
+	return 1;
+}
+
 static int parse_settings(parser *p, const char *name)
 {
 	scene *s = p->s;
@@ -661,21 +673,14 @@ static int parse_settings(parser *p, const char *name)
 		/* `absorb a` (grey) or `absorb ar ag ab` (per channel, on one line). */
 		int line = p->lx.tok_line, per_channel;
 		real a;
-		if (!read_number(&p->lx, "a number (absorption coefficient)", &a))
+		if (!read_absorption(p, &a))
 			return 0;
 		p->absorb = vec_make(a, a, a);
 		per_channel = number_follows_on(p, line);
 		if (per_channel < 0)
 			return 0;
-		if (per_channel && (!read_number(&p->lx, "a number (absorption coefficient)",
-						 &p->absorb.y) ||
-				    !read_number(&p->lx, "a number (absorption coefficient)",
-						 &p->absorb.z)))
-			return 0;
-		if (p->absorb.x < 0 || p->absorb.y < 0 || p->absorb.z < 0)
-			return fail(&p->lx, p->lx.tok_line,
-				    "absorption coefficient must not be negative, got %s", p->lx.tok);
-		return 1;
+		return !per_channel ||
+		       (read_absorption(p, &p->absorb.y) && read_absorption(p, &p->absorb.z));
 	}
 	if (strcmp(name, "depth") == 0) {
 		long depth;

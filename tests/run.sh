@@ -27,6 +27,10 @@ tally() {
 
 tally unit "$(./build/unit-tests 2>&1)"
 tally unit-sanitized "$(./build/san/unit-tests 2>&1)"
+# Every fuzzing corpus input and every bad scene, parsed and rendered tiny under ASan+UBSan.
+set -- tests/fuzz/corpus/*
+[ -d tests/bad ] && set -- "$@" tests/bad/*.nff
+tally fuzz-replay "$(./build/san/replay "$@" 2>&1)"
 for script in tests/cli.sh tests/golden.sh; do
 	[ -f "$script" ] || continue
 	name=$(basename "$script" .sh)

@@ -1,0 +1,382 @@
+#!/bin/sh
+# cli.sh - the command line from outside: options, exit status, messages and output bytes.
+# Run from the repository root as `RT=./rt sh tests/cli.sh`; ends with `N passed, N failed`.
+# See LICENSE for copyright and licence.
+
+RT=${RT:-./rt}
+# Absolute, so a test may run from another directory.
+case $RT in
+/*) ;;
+*) RT=$(pwd)/$RT ;;
+esac
+passed=0
+failed=0
+
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/rt-cli.XXXXXX") || exit 1
+trap 'rm -rf "$tmp"' EXIT
+trap 'exit 1' HUP INT TERM
+
+# ---- helpers -----------------------------------------------------------------------
+
+ok() { passed=$((passed + 1)); }
+bad() {
+	echo "cli.sh: $*"
+	failed=$((failed + 1))
+}
+
+# Runs rt with its output in $tmp/out and $tmp/err, the exit status in $status.
+run() {
+	"$RT" "$@" >"$tmp/out" 2>"$tmp/err"
+	status=$?
+}
+
+# expect_status WHAT N: the last run exited with N.
+expect_status() {
+	if [ "$status" -eq "$2" ]; then ok; else bad "$1: exit status $status, expected $2"; fi
+}
+
+# expect_err WHAT TEXT: standard error holds TEXT (a fixed string).
+expect_err() {
+	if grep -q -F -e "$2" "$tmp/err"; then ok; else
+		bad "$1: stderr lacks '$2' (got: $(head -n 3 "$tmp/err"))"
+	fi
+}
+
+# expect_no_stdout WHAT: nothing at all was written to standard output.
+expect_no_stdout() {
+	if [ -s "$tmp/out" ]; then bad "$1: unexpected output on stdout"; else ok; fi
+}
+
+# expect_no_stderr WHAT
+expect_no_stderr() {
+	if [ -s "$tmp/err" ]; then bad "$1: unexpected stderr: $(head -n 3 "$tmp/err")"; else ok; fi
+}
+
+size_of() { wc -c <"$1" | tr -d ' '; }
+
+# expect_ppm WHAT FILE W H: FILE is exactly a P6 header for WxH plus W*H*3 bytes.
+expect_ppm() {
+	printf 'P6\n%d %d\n255\n' "$3" "$4" >"$tmp/header"
+	hlen=$(size_of "$tmp/header")
+	if dd if="$2" bs="$hlen" count=1 2>/dev/null | cmp -s - "$tmp/header"; then ok; else
+		bad "$1: header is not 'P6 $3 $4 255'"
+	fi
+	want=$((hlen + $3 * $4 * 3))
+	got=$(size_of "$2")
+	if [ "$got" -eq "$want" ]; then ok; else bad "$1: $got bytes, expected $want"; fi
+}
+
+# pixel FILE X Y: the three bytes of pixel (X, Y), as "R G B".
+pixel() {
+	w=$(sed -n 2p "$1" | cut -d ' ' -f 1)
+	h=$(sed -n 2p "$1" | cut -d ' ' -f 2)
+	# "P6\n" W " " H "\n255\n"
+	hdr=$((${#w} + ${#h} + 9))
+	set -- $(od -An -tu1 -j $((hdr + ($3 * w + $2) * 3)) -N 3 "$1" 2>/dev/null)
+	echo "$1 $2 $3"
+}
+
+# expect_pixel WHAT FILE X Y "R G B"
+expect_pixel() {
+	got=$(pixel "$2" "$3" "$4")
+	if [ "$got" = "$5" ]; then ok; else bad "$1: pixel ($3, $4) is '$got', expected '$5'"; fi
+}
+
+# stat_of NAME: the value of `NAME: value` in the last run's stderr.
+stat_of() { sed -n "s/^$1: //p" "$tmp/err"; }
+
+# expect_stat WHAT NAME OP VALUE, with OP one of test's -eq -gt ...
+expect_stat() {
+	v=$(stat_of "$2")
+	case $v in
+	'' | *[!0-9]*) bad "$1: $2 is '$v', not a whole number" ;;
+	*) if [ "$v" "$3" "$4" ]; then ok; else bad "$1: $2 is $v, expected $3 $4"; fi ;;
+	esac
+}
+
+# expect_same WHAT A B: byte-for-byte identical files.
+expect_same() {
+	if cmp -s "$2" "$3"; then ok; else bad "$1: $2 and $3 differ"; fi
+}
+
+# ---- scenes --------------------------------------------------------------------------
+
+view() {
+	printf 'v\nfrom %s\nat 0 0 0\nup 0 1 0\nangle 45\nhither 1\nresolution %s\n' "$1" "$2"
+}
+
+# A lit, diffuse sphere on a coloured background (b decodes to linear and back exactly).
+{
+	view "0 0 -10" "16 12"
+	printf 'b 0.2 0.4 0.6\nl -5 5 -10\nf 1 0.5 0.2 0.8 0 1 0 1\ns 0 0 0 3\n'
+} >"$tmp/ok.nff"
+
+# The same scene with CRLF line ends, and without its final newline.
+sed 's/$/\r/' "$tmp/ok.nff" >"$tmp/crlf.nff"
+printf '%s' "$(cat "$tmp/ok.nff")" >"$tmp/nonl.nff"
+
+# A mirror sphere (Ks > 0), a glass sphere (T > 0), and the eye inside a glass sphere.
+{
+	view "0 0 -10" "16 12"
+	printf 'l -5 5 -10\nf 1 1 1 0.5 0.5 10 0 1\ns 0 0 0 3\n'
+} >"$tmp/mirror.nff"
+{
+	view "0 0 -10" "16 12"
+	printf 'b 0.2 0.4 0.6\nl -5 5 -10\nf 1 1 1 0 0 0 0.9 1.5\ns 0 0 0 3\n'
+} >"$tmp/glass.nff"
+{
+	view "0 0 -1" "16 12"
+	printf 'b 0.2 0.4 0.6\nl 0 0 -2\nf 0.9 0.9 1 0.2 0 0 0.8 1.3\ns 0 0 0 20\n'
+	printf 'f 1 0 0 1 0 0 0 1\ns 0 0 8 2\n'
+} >"$tmp/inside.nff"
+
+# Nothing but a view and a background; and an object with no light at all.
+{
+	view "0 0 -10" "16 12"
+	printf 'b 0.2 0.4 0.6\n'
+} >"$tmp/empty.nff"
+{
+	view "0 0 -10" "16 12"
+	printf 'b 0.2 0.4 0.6\ns 0 0 0 3\n'
+} >"$tmp/unlit.nff"
+
+# An error on line 9, and a skipped zero-radius sphere on line 8.
+{
+	view "0 0 -10" "16 12"
+	printf 's 0 0 0 1\ns 0 0 zero 1\n'
+} >"$tmp/bad.nff"
+{
+	view "0 0 -10" "16 12"
+	printf 's 0 0 0 0\n'
+} >"$tmp/warn.nff"
+
+# ---- help, version, usage errors ----------------------------------------------------
+
+run --help
+expect_status "--help" 0
+expect_no_stderr "--help"
+if grep -q '^Usage: rt ' "$tmp/out"; then ok; else bad "--help: no 'Usage: rt' line on stdout"; fi
+
+run --version
+expect_status "--version" 0
+expect_no_stderr "--version"
+if grep -q '^rt [0-9]' "$tmp/out"; then ok; else bad "--version: no 'rt VERSION' on stdout"; fi
+
+# usage WHAT ARGS...: exit 2, nothing on stdout, a hint on stderr.
+usage() {
+	what=$1
+	shift
+	run "$@"
+	expect_status "usage: $what" 2
+	expect_no_stdout "usage: $what"
+	expect_err "usage: $what" "rt: "
+	expect_err "usage: $what" "Try 'rt --help'"
+}
+usage "no scene"
+usage "unknown option" --frobnicate "$tmp/ok.nff"
+usage "-s 0x5" -s 0x5 "$tmp/ok.nff"
+usage "-s 10" -s 10 "$tmp/ok.nff"
+usage "-s 5x" -s 5x "$tmp/ok.nff"
+usage "-s x5" -s x5 "$tmp/ok.nff"
+usage "-s -4x4" -s -4x4 "$tmp/ok.nff"
+usage "-s 4x4x4" -s 4x4x4 "$tmp/ok.nff"
+usage "-d 0" -d 0 "$tmp/ok.nff"
+usage "-d 99" -d 99 "$tmp/ok.nff"
+usage "-d x" -d x "$tmp/ok.nff"
+usage "-d without a value" "$tmp/ok.nff" -d
+usage "-o without a value" "$tmp/ok.nff" -o
+usage "two scenes" "$tmp/ok.nff" "$tmp/ok.nff"
+run -s 0x5 "$tmp/ok.nff"
+expect_err "-s 0x5" "bad size '0x5'"
+run -d 99 "$tmp/ok.nff"
+expect_err "-d 99" "bad depth '99'"
+
+# ---- scene errors -------------------------------------------------------------------
+
+run "$tmp/none.nff"
+expect_status "missing scene" 1
+expect_no_stdout "missing scene"
+expect_err "missing scene" "rt: $tmp/none.nff: cannot open"
+
+run "$tmp/bad.nff"
+expect_status "scene error" 1
+expect_no_stdout "scene error"
+expect_err "scene error" "rt: $tmp/bad.nff:9: expected a number (sphere centre), got 'zero'"
+if [ "$(wc -l <"$tmp/err" | tr -d ' ')" -eq 1 ]; then ok; else bad "scene error: not one line"; fi
+
+# A warning is not an error: the image is still written.
+run "$tmp/warn.nff"
+expect_status "warning" 0
+expect_err "warning" "rt: $tmp/warn.nff:8: warning: sphere with radius 0; skipped"
+expect_ppm "warning" "$tmp/out" 16 12
+
+# ---- images ---------------------------------------------------------------------------
+
+run "$tmp/ok.nff"
+expect_status "render" 0
+expect_no_stderr "render"
+expect_ppm "render" "$tmp/out" 16 12
+cp "$tmp/out" "$tmp/ok.ppm"
+# Corner pixel: the background, b 0.2 0.4 0.6 = codes 51 102 153.
+expect_pixel "render" "$tmp/ok.ppm" 0 0 "51 102 153"
+
+run -s 7x5 "$tmp/ok.nff"
+expect_status "-s 7x5" 0
+expect_ppm "-s 7x5" "$tmp/out" 7 5
+run -s 1x1 "$tmp/ok.nff"
+expect_ppm "-s 1x1" "$tmp/out" 1 1
+
+# Determinism: the same run twice gives the same bytes (glass exercises every ray kind).
+run "$tmp/glass.nff"
+cp "$tmp/out" "$tmp/glass1.ppm"
+run "$tmp/glass.nff"
+expect_same "determinism" "$tmp/glass1.ppm" "$tmp/out"
+run --spd "$tmp/mirror.nff"
+cp "$tmp/out" "$tmp/mirror1.ppm"
+run --spd "$tmp/mirror.nff"
+expect_same "determinism --spd" "$tmp/mirror1.ppm" "$tmp/out"
+
+# ---- -o -------------------------------------------------------------------------------
+
+mkdir "$tmp/o"
+run "$tmp/ok.nff" -o "$tmp/o/image.ppm"
+expect_status "-o" 0
+expect_no_stdout "-o"
+expect_no_stderr "-o"
+expect_same "-o" "$tmp/ok.ppm" "$tmp/o/image.ppm"
+if [ "$(ls -A "$tmp/o")" = image.ppm ]; then ok; else bad "-o: left behind: $(ls -A "$tmp/o")"; fi
+# The image gets an ordinary file's mode, not mkstemp's private 0600.
+(
+	umask 022
+	rm -f "$tmp/o/image.ppm"
+	"$RT" "$tmp/ok.nff" -o "$tmp/o/image.ppm"
+)
+case $(ls -l "$tmp/o/image.ppm" 2>/dev/null) in
+-rw-r--r--*) ok ;;
+*) bad "-o: new file mode is $(ls -l "$tmp/o/image.ppm" | cut -c 1-10), expected -rw-r--r--" ;;
+esac
+
+# A failing scene leaves an existing file exactly as it was, and no temporary file.
+mkdir "$tmp/keep"
+printf 'precious\n' >"$tmp/keep/image.ppm"
+cp "$tmp/keep/image.ppm" "$tmp/precious"
+run "$tmp/bad.nff" -o "$tmp/keep/image.ppm"
+expect_status "-o, failing scene" 1
+expect_no_stdout "-o, failing scene"
+expect_same "-o, failing scene" "$tmp/precious" "$tmp/keep/image.ppm"
+if [ "$(ls -A "$tmp/keep")" = image.ppm ]; then ok; else
+	bad "-o, failing scene: left behind: $(ls -A "$tmp/keep")"
+fi
+# A good scene replaces it, keeping its mode.
+chmod 640 "$tmp/keep/image.ppm"
+run "$tmp/ok.nff" -o "$tmp/keep/image.ppm"
+expect_status "-o, replace" 0
+expect_same "-o, replace" "$tmp/ok.ppm" "$tmp/keep/image.ppm"
+case $(ls -l "$tmp/keep/image.ppm" 2>/dev/null) in
+-rw-r-----*) ok ;;
+*) bad "-o, replace: mode is $(ls -l "$tmp/keep/image.ppm" | cut -c 1-10), expected -rw-r-----" ;;
+esac
+if [ "$(ls -A "$tmp/keep")" = image.ppm ]; then ok; else
+	bad "-o, replace: left behind: $(ls -A "$tmp/keep")"
+fi
+
+run "$tmp/ok.nff" -o "$tmp/no/such/dir/image.ppm"
+expect_status "-o into a missing directory" 1
+expect_no_stdout "-o into a missing directory"
+expect_err "-o into a missing directory" "rt: $tmp/no/such/dir/image.ppm: "
+if [ ! -e "$tmp/no" ]; then ok; else bad "-o into a missing directory: it was created"; fi
+
+# Standard output that cannot be written.
+if [ -w /dev/full ]; then
+	"$RT" "$tmp/ok.nff" >/dev/full 2>"$tmp/err"
+	status=$?
+	expect_status "stdout to /dev/full" 1
+	expect_err "stdout to /dev/full" "rt: write error"
+	# Larger than any stdio buffer: the write fails during the render, reported once.
+	"$RT" -s 300x300 "$tmp/ok.nff" >/dev/full 2>"$tmp/err"
+	status=$?
+	expect_status "large image to /dev/full" 1
+	expect_err "large image to /dev/full" "rt: write error"
+	n=$(grep -c 'write error' "$tmp/err")
+	if [ "$n" -eq 1 ]; then ok; else bad "large image to /dev/full: $n write errors"; fi
+fi
+
+# ---- --stats ---------------------------------------------------------------------------
+
+run --stats "$tmp/mirror.nff"
+expect_status "--stats" 0
+expect_ppm "--stats" "$tmp/out" 16 12
+for key in eye_rays eye_hits shadow_rays reflect_rays refract_rays seconds rays_per_second; do
+	n=$(grep -c "^$key: [0-9][0-9.]*\$" "$tmp/err")
+	if [ "$n" -eq 1 ]; then ok; else bad "--stats: $n lines '$key: value', expected 1"; fi
+done
+# Every line is `name: value`.
+stat_line='^[a-z_]*: [0-9][0-9.]*$'
+if grep -v -q "$stat_line" "$tmp/err"; then
+	bad "--stats: a line is not 'name: value': $(grep -v "$stat_line" "$tmp/err" | head -n 1)"
+else
+	ok
+fi
+expect_stat "--stats" eye_rays -eq 192
+expect_stat "mirror" eye_hits -gt 0
+expect_stat "mirror" eye_hits -lt 192
+expect_stat "mirror" shadow_rays -gt 0
+expect_stat "mirror" reflect_rays -gt 0
+expect_stat "mirror" refract_rays -eq 0
+
+run --stats -d 1 "$tmp/mirror.nff"
+expect_stat "-d 1" reflect_rays -eq 0
+expect_stat "-d 1" eye_rays -eq 192
+
+run --stats "$tmp/ok.nff"
+expect_stat "no Ks" reflect_rays -eq 0
+expect_stat "no Ks" refract_rays -eq 0
+
+run --stats "$tmp/glass.nff"
+expect_stat "glass" refract_rays -gt 0
+
+# --spd shoots rays through the (W+1) x (H+1) pixel corners.
+run --stats --spd -s 8x6 "$tmp/ok.nff"
+expect_status "--spd" 0
+expect_ppm "--spd" "$tmp/out" 8 6
+expect_stat "--spd -s 8x6" eye_rays -eq 63
+run --stats -s 8x6 "$tmp/ok.nff"
+expect_stat "-s 8x6" eye_rays -eq 48
+
+# Statistics go to stderr only: the image on stdout is the same with and without them.
+run --stats "$tmp/ok.nff"
+expect_same "--stats" "$tmp/ok.ppm" "$tmp/out"
+
+# ---- unusual inputs ------------------------------------------------------------------
+
+run "$tmp/crlf.nff"
+expect_status "CRLF scene" 0
+expect_no_stderr "CRLF scene"
+expect_same "CRLF scene" "$tmp/ok.ppm" "$tmp/out"
+
+run "$tmp/nonl.nff"
+expect_status "no final newline" 0
+expect_same "no final newline" "$tmp/ok.ppm" "$tmp/out"
+
+run --stats "$tmp/inside.nff"
+expect_status "eye inside glass" 0
+expect_ppm "eye inside glass" "$tmp/out" 16 12
+expect_stat "eye inside glass" eye_hits -eq 192
+expect_stat "eye inside glass" refract_rays -gt 0
+
+run --stats "$tmp/empty.nff"
+expect_status "no objects" 0
+expect_ppm "no objects" "$tmp/out" 16 12
+expect_pixel "no objects" "$tmp/out" 0 0 "51 102 153"
+expect_pixel "no objects" "$tmp/out" 8 6 "51 102 153"
+expect_pixel "no objects" "$tmp/out" 15 11 "51 102 153"
+expect_stat "no objects" eye_hits -eq 0
+
+# No light and no ambient: the sphere is black, the background still shows.
+run "$tmp/unlit.nff"
+expect_status "no lights" 0
+expect_pixel "no lights" "$tmp/out" 8 6 "0 0 0"
+expect_pixel "no lights" "$tmp/out" 0 0 "51 102 153"
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]

@@ -1,0 +1,64 @@
+/* fuzz_scene.c - the fuzzing entry point: parse any bytes as a scene and, if they parse,
+ * render a tiny image of it. Built with libFuzzer by `make fuzz`; replayed over the
+ * corpus by `make test` (replay.c). See LICENSE for copyright and licence. */
+#include <stddef.h>
+#include <stdint.h>
+
+#include "bvh.h"
+#include "camera.h"
+#include "diag.h"
+#include "parse.h"
+#include "render.h"
+#include "trace.h"
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+
+typedef struct {
+	const uint8_t *data;
+	size_t size, at;
+} memory_reader;
+
+static int read_memory(void *ctx)
+{
+	memory_reader *m = ctx;
+	return m->at < m->size ? m->data[m->at++] : -1;
+}
+
+static void quiet(void *ctx, const char *message)
+{
+	(void)ctx;
+	(void)message;
+}
+
+static int discard(void *ctx, const void *bytes, size_t n)
+{
+	(void)ctx;
+	(void)bytes;
+	(void)n;
+	return 1;
+}
+
+static scene fuzz_scene;
+static tracer fuzz_tracer;
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+	memory_reader m;
+	camera cam;
+	m.data = data;
+	m.size = size;
+	m.at = 0;
+	diag_set_sink(quiet, NULL);
+	if (parse_scene(&fuzz_scene, "fuzz.nff", read_memory, &m)) {
+#if RT_USE_BVH
+		bvh_build(&fuzz_scene);
+#endif
+		/* A tiny image: every code path of the tracer, a few dozen eye rays. */
+		if (camera_init(&cam, &fuzz_scene.camera, 6, 4)) {
+			tracer_init(&fuzz_tracer, &fuzz_scene, fuzz_scene.depth, fuzz_scene.cutoff);
+			render_ppm(&fuzz_tracer, &cam, SAMPLE_CORNERS, discard, NULL);
+		}
+	}
+	diag_set_sink(NULL, NULL);
+	return 0;
+}
