@@ -69,7 +69,7 @@ static int hedron_bounds(const scene *s, const object *o, vec3 *lo, vec3 *hi)
 					     vec_cross(planes[i].normal, planes[j].normal));
 				p = vec_scale(p, real_div(REAL_C(1.0), det));
 				for (m = 0; m < count + 6; m++) {
-					real slack = REAL_C(1e-9) * real_max(REAL_C(1.0), vec_max_abs(p));
+					real slack = real_mul(REAL_OFFSET, real_max(REAL_C(1.0), vec_max_abs(p)));
 					if (vec_dot(planes[m].normal, p) - planes[m].offset > slack)
 						break;
 				}

@@ -39,6 +39,12 @@ int cone_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h)
 						    c->slope),
 				  c->axis);
 		normal = vec_normalize(normal);
+		/* At a pointed tip the radial part and the radius are both 0, so is the
+		 * gradient: a ray along the axis, or across it through the tip, touches the
+		 * cone only there. A touch is a hit (like a sphere's tangent); give it the axis
+		 * out of the tip as its normal rather than the zero vector. */
+		if (!(vec_dot(normal, normal) > REAL_C(0.0)))
+			normal = c->slope < REAL_C(0.0) ? c->axis : vec_neg(c->axis);
 		if ((o->flags & OBJ_INSIDE_ONLY) && vec_dot(normal, r->dir) < REAL_C(0.0))
 			continue;
 		if (h) {

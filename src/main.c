@@ -27,6 +27,8 @@ static const char usage_text[] =
 	"  -o FILE      write the image to FILE (replaced only when the render succeeds)\n"
 	"  -s WxH       image size in pixels, overriding the scene's resolution\n"
 	"  -d N         ray tree depth, 1 to " RT_STRINGIFY(RT_MAX_DEPTH) " (eye ray = 1)\n"
+	"  --rows Y0:Y1 render only rows Y0 to Y1-1, as a PPM of that band (for splitting\n"
+	"               a render across processes: see tools/render-parallel)\n"
 	"  --spd        SPD testing procedure: corner rays, depth 5, no weight cutoff\n"
 	"  --stats      print ray counts and timings on standard error\n"
 	"  --help       show this help and exit\n"
@@ -39,6 +41,7 @@ typedef struct {
 	const char *output_path;
 	int width, height; /* 0: the scene's */
 	int depth;         /* 0: the scene's */
+	int row_first, row_end; /* --rows: [first, end); end 0 for all rows */
 	int spd;
 	int stats;
 } options;
@@ -71,6 +74,25 @@ static int parse_size(const char *text, char stop, long max, int *out, const cha
 	return 1;
 }
 
+/* Parses Y0:Y1 with 0 <= Y0 < Y1 <= RT_MAX_HEIGHT. */
+static int parse_rows(const char *text, int *first, int *end)
+{
+	char *stop;
+	long a, b;
+	if (*text < '0' || *text > '9')
+		return 0;
+	errno = 0;
+	a = strtol(text, &stop, 10);
+	if (errno || *stop != ':' || stop[1] < '0' || stop[1] > '9')
+		return 0;
+	b = strtol(stop + 1, &stop, 10);
+	if (errno || *stop != '\0' || a < 0 || b <= a || b > RT_MAX_HEIGHT)
+		return 0;
+	*first = (int)a;
+	*end = (int)b;
+	return 1;
+}
+
 /* Returns -1 to go on, else the exit status. */
 static int parse_options(int argc, char **argv, options *o)
 {
@@ -88,6 +110,12 @@ static int parse_options(int argc, char **argv, options *o)
 			o->stats = 1;
 		} else if (strcmp(a, "--spd") == 0) {
 			o->spd = 1;
+		} else if (strcmp(a, "--rows") == 0) {
+			const char *value = i + 1 < argc ? argv[++i] : NULL;
+			if (!value)
+				return usage_error("option '%s' needs a value", a);
+			if (!parse_rows(value, &o->row_first, &o->row_end))
+				return usage_error("bad rows '%s' (expected Y0:Y1 with 0 <= Y0 < Y1)", value);
 		} else if (strcmp(a, "-o") == 0 || strcmp(a, "-s") == 0 || strcmp(a, "-d") == 0) {
 			const char *value = i + 1 < argc ? argv[++i] : NULL, *rest;
 			if (!value)
@@ -241,10 +269,16 @@ int main(int argc, char **argv)
 		diag_error(opt.scene_path, 0, "degenerate view");
 		return 1;
 	}
+	if (opt.row_end > height) {
+		diag_error(NULL, 0, "--rows %d:%d is outside the image's %d rows", opt.row_first,
+			   opt.row_end, height);
+		return 2;
+	}
 	tracer_init(&tr, &the_scene, depth, cutoff);
 	if (!output_open(&out, opt.output_path))
 		return 1;
-	ok = render_ppm(&tr, &cam, opt.spd ? SAMPLE_CORNERS : SAMPLE_CENTRE, write_stdio, out.file);
+	ok = render_ppm(&tr, &cam, opt.spd ? SAMPLE_CORNERS : SAMPLE_CENTRE, opt.row_first,
+			opt.row_end ? opt.row_end : height, write_stdio, out.file);
 	if (!ok)
 		diag_error(NULL, 0, "write error: %s", strerror(errno));
 	if (!output_close(&out, opt.output_path, ok))

@@ -33,10 +33,11 @@ int polygon_contains_2d(const vec2 *uv, int count, real pu, real pv)
 		}
 		/* Does the edge cross the +u ray from the point, i.e. is its u-intercept >= pu?
 		 * Without a division (hi.v - lo.v > 0 here), that is cross(lo - p, hi - p) >= 0.
-		 * Taken relative to p, each vertex is rounded once, the same way for every edge
-		 * and polygon that meets there: with `pu - lo.u` rounded per edge instead, a hit
-		 * point within rounding of a vertex where several polygons meet was claimed by
-		 * three of them (test_polygon.c, G11 through rays: 147 in 400k in float). */
+		 * Relative to p, each vertex is rounded once, the same way for every edge and
+		 * polygon that meets there. The intercept form rounded `pu - lo.u` per edge, and
+		 * a hit point within rounding of a vertex shared by several polygons was then
+		 * claimed by three of them (G11 through rays: 147 in 400k in float, 21 in
+		 * double). */
 		{
 			real au = lo.u - pu, av = lo.v - pv, bu = hi.u - pu, bv = hi.v - pv;
 			if (real_mul(au, bv) >= real_mul(av, bu))

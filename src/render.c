@@ -20,15 +20,15 @@ static void trace_corner_row(tracer *t, const camera *c, int y, vec3 *out)
 	}
 }
 
-int render_ppm(tracer *t, const camera *c, enum render_sampling sampling, write_fn write,
-	       void *ctx)
+int render_ppm(tracer *t, const camera *c, enum render_sampling sampling, int y0, int y1,
+	       write_fn write, void *ctx)
 {
 	int x, y, top = 0;
-	if (!ppm_write_header(write, ctx, c->width, c->height))
+	if (!ppm_write_header(write, ctx, c->width, y1 - y0))
 		return 0;
 	if (sampling == SAMPLE_CORNERS)
-		trace_corner_row(t, c, 0, corner_rows[top]);
-	for (y = 0; y < c->height; y++) {
+		trace_corner_row(t, c, y0, corner_rows[top]);
+	for (y = y0; y < y1; y++) {
 		if (sampling == SAMPLE_CORNERS) {
 			/* The bottom corners of this row are the top corners of the next. */
 			const vec3 *above = corner_rows[top], *below = corner_rows[!top];

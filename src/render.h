@@ -13,9 +13,11 @@ enum render_sampling {
 	SAMPLE_CORNERS /* SPD: (W+1) x (H+1) corner rays, each pixel the mean of its four */
 };
 
-/* Renders the whole image as PPM through `write`. Returns 1 on success, 0 when a write
- * fails (the caller reports it). */
-int render_ppm(tracer *t, const camera *c, enum render_sampling sampling, write_fn write,
-	       void *ctx);
+/* Renders rows [y0, y1) of the camera's image as a PPM of that band through `write`
+ * (y0 = 0, y1 = height for the whole image). Bands rendered separately and joined (one
+ * header, then each band's pixels in order) are byte-identical to the whole image.
+ * Returns 1 on success, 0 when a write fails (the caller reports it). */
+int render_ppm(tracer *t, const camera *c, enum render_sampling sampling, int y0, int y1,
+	       write_fn write, void *ctx);
 
 #endif

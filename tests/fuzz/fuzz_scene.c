@@ -56,7 +56,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 		/* A tiny image: every code path of the tracer, a few dozen eye rays. */
 		if (camera_init(&cam, &fuzz_scene.camera, 6, 4)) {
 			tracer_init(&fuzz_tracer, &fuzz_scene, fuzz_scene.depth, fuzz_scene.cutoff);
-			render_ppm(&fuzz_tracer, &cam, SAMPLE_CORNERS, discard, NULL);
+			render_ppm(&fuzz_tracer, &cam, SAMPLE_CORNERS, 0, cam.height, discard, NULL);
 		}
 	}
 	diag_set_sink(NULL, NULL);

@@ -1,0 +1,191 @@
+/* test_cone.c - uncapped cylinders and cones (NFF c): side hits, the open ends, rays
+ * parallel to the axis or to a side line, the tip, and NFF's inside-only form.
+ * See LICENSE for copyright and licence. */
+#include <math.h>
+#include <stdio.h>
+
+#include "shape.h"
+#include "test.h"
+
+typedef struct {
+	const char *id;
+	real base[3], apex[3];
+	real base_radius, apex_radius;
+	unsigned flags;
+	real o[3], d[3]; /* d is normalised here */
+	real tmin;
+	int hit;
+	real t;
+	real n[3]; /* expected outward normal, up to length */
+} cone_case;
+
+#define TWO OBJ_TWO_SIDED
+#define INSIDE (OBJ_TWO_SIDED | OBJ_INSIDE_ONLY)
+#define SQRT2 REAL_C(1.4142135623730950488)
+
+/* Cylinder Y: base (0,0,0), top (0,0,2), r 1. Cone K: r 1 at z = 0 to a tip at z = 2.
+ * Cone T: r 1 at z = 0 to a tip at z = 1 (a right angle at the tip). */
+static const cone_case cases[] = {
+	/* Cylinder: the wall from outside and from inside (the normal is outward). */
+	{"Y side", {0, 0, 0}, {0, 0, 2}, 1, 1, TWO, {-5, 0, 1}, {1, 0, 0}, 0, 1, 4, {-1, 0, 0}},
+	{"Y inside", {0, 0, 0}, {0, 0, 2}, 1, 1, TWO, {0, 0, 1}, {1, 0, 0}, 0, 1, 1, {1, 0, 0}},
+	/* Uncapped: the infinite cylinder's wall above and below the ends is not there. */
+	{"Y above", {0, 0, 0}, {0, 0, 2}, 1, 1, TWO, {-5, 0, 3}, {1, 0, 0}, 0, 0, 0, {0, 0, 0}},
+	{"Y below", {0, 0, 0}, {0, 0, 2}, 1, 1, TWO, {-5, 0, REAL_C(-0.5)}, {1, 0, 0}, 0, 0, 0,
+	 {0, 0, 0}},
+	/* In through the open top (near root behind the origin), out through the wall. */
+	{"Y open top", {0, 0, 0}, {0, 0, 2}, 1, 1, TWO, {0, 0, REAL_C(2.5)}, {1, 0, -1}, 0, 1,
+	 SQRT2, {1, 0, 0}},
+	/* In through the wall, out through the open top: only the entry. */
+	{"Y out top", {0, 0, 0}, {0, 0, 2}, 1, 1, TWO, {-2, 0, REAL_C(0.5)}, {1, 0, 1}, 0, 1,
+	 SQRT2, {-1, 0, 0}},
+	/* The near root lies above the top, so the far one (the inside of the wall) counts. */
+	{"Y far root", {0, 0, 0}, {0, 0, 2}, 1, 1, TWO, {-2, 0, REAL_C(3.5)}, {1, 0, -1}, 0, 1,
+	 REAL_C(3.0) * SQRT2, {1, 0, 0}},
+	/* Past the near root, the far one. */
+	{"Y tmin", {0, 0, 0}, {0, 0, 2}, 1, 1, TWO, {-5, 0, 1}, {1, 0, 0}, REAL_C(4.5), 1, 6,
+	 {1, 0, 0}},
+	/* Parallel to the axis (a = 0, b = 0): on the axis, inside off it, or outside, the
+	 * ray never meets the wall of an uncapped cylinder. */
+	{"Y on axis", {0, 0, 0}, {0, 0, 2}, 1, 1, TWO, {0, 0, -5}, {0, 0, 1}, 0, 0, 0, {0, 0, 0}},
+	{"Y axis from in", {0, 0, 0}, {0, 0, 2}, 1, 1, TWO, {0, 0, 1}, {0, 0, 1}, 0, 0, 0,
+	 {0, 0, 0}},
+	{"Y parallel in", {0, 0, 0}, {0, 0, 2}, 1, 1, TWO, {REAL_C(0.5), 0, -5}, {0, 0, 1}, 0, 0, 0,
+	 {0, 0, 0}},
+	{"Y parallel out", {0, 0, 0}, {0, 0, 2}, 1, 1, TWO, {2, 0, -5}, {0, 0, 1}, 0, 0, 0,
+	 {0, 0, 0}},
+	/* A slanted cylinder: base (1,2,3), axis (1,1,0)/sqrt 2, length 4, r 0.5. The ray
+	 * meets the axis point at height 2, (1+sqrt 2, 2+sqrt 2, 3), straight from below. */
+	{"Y slanted", {1, 2, 3},
+	 {REAL_C(1.0) + REAL_C(2.0) * SQRT2, REAL_C(2.0) + REAL_C(2.0) * SQRT2, 3}, REAL_C(0.5),
+	 REAL_C(0.5), TWO, {REAL_C(1.0) + SQRT2, REAL_C(2.0) + SQRT2, -2}, {0, 0, 1}, 0, 1,
+	 REAL_C(4.5), {0, 0, -1}},
+
+	/* Cone K: at z = 1 the radius is 0.5; outward normal (-1, 0, 1/2). */
+	{"K side", {0, 0, 0}, {0, 0, 2}, 1, 0, TWO, {-5, 0, 1}, {1, 0, 0}, 0, 1, REAL_C(4.5),
+	 {-2, 0, 1}},
+	/* The quadric is a double cone: its upper nappe above the tip and its lower part
+	 * below the base are not the cone. */
+	{"T above tip", {0, 0, 0}, {0, 0, 1}, 1, 0, TWO, {-5, 0, REAL_C(1.5)}, {1, 0, 0}, 0, 0, 0,
+	 {0, 0, 0}},
+	{"T below base", {0, 0, 0}, {0, 0, 1}, 1, 0, TWO, {-5, 0, REAL_C(-0.5)}, {1, 0, 0}, 0, 0,
+	 0, {0, 0, 0}},
+	/* Parallel to a side line (a = 0, the linear case): one root, in through the open
+	 * base, out through the far wall at (-0.25, 0, 0.75). */
+	{"T parallel side", {0, 0, 0}, {0, 0, 1}, 1, 0, TWO, {1, 0, REAL_C(-0.5)}, {-1, 0, 1}, 0, 1,
+	 REAL_C(1.25) * SQRT2, {-1, 0, 1}},
+	/* Parallel to the axis inside: the upper nappe's root (z = 1.5) is cut off. */
+	{"T parallel axis", {0, 0, 0}, {0, 0, 1}, 1, 0, TWO, {REAL_C(0.5), 0, -5}, {0, 0, 1}, 0, 1,
+	 REAL_C(5.5), {1, 0, 1}},
+	/* Along the axis, or across it, through the tip: the ray touches the cone at one
+	 * point, where the side has no normal. A touch is a hit (as a sphere's tangent,
+	 * S05), with the axis out of the tip as its unit normal. */
+	{"T tip down axis", {0, 0, 0}, {0, 0, 1}, 1, 0, TWO, {0, 0, 5}, {0, 0, -1}, 0, 1, 4,
+	 {0, 0, 1}},
+	{"T tip up axis", {0, 0, 0}, {0, 0, 1}, 1, 0, TWO, {0, 0, -5}, {0, 0, 1}, 0, 1, 6,
+	 {0, 0, 1}},
+	{"T tip across", {0, 0, 0}, {0, 0, 1}, 1, 0, TWO, {-5, 0, 1}, {1, 0, 0}, 0, 1, 5,
+	 {0, 0, 1}},
+	/* A frustum, r 1 at z = 0 to r 0.5 at z = 1: at z = 0.5 the radius is 0.75. */
+	{"frustum", {0, 0, 0}, {0, 0, 1}, 1, REAL_C(0.5), TWO, {-5, 0, REAL_C(0.5)}, {1, 0, 0}, 0,
+	 1, REAL_C(4.25), {-2, 0, 1}},
+	/* Widening upward, tip at the base: the normal points down and out. */
+	{"inverted", {0, 0, 0}, {0, 0, 1}, 0, 1, TWO, {-5, 0, REAL_C(0.5)}, {1, 0, 0}, 0, 1,
+	 REAL_C(4.5), {-1, 0, -1}},
+	{"inverted tip", {0, 0, 0}, {0, 0, 1}, 0, 1, TWO, {0, 0, -5}, {0, 0, 1}, 0, 1, 5,
+	 {0, 0, -1}},
+
+	/* NFF's negative radii: only the inside shows. From outside, the far wall. */
+	{"Y inside-only", {0, 0, 0}, {0, 0, 2}, 1, 1, INSIDE, {-5, 0, 1}, {1, 0, 0}, 0, 1, 6,
+	 {1, 0, 0}},
+	{"Y inside-only in", {0, 0, 0}, {0, 0, 2}, 1, 1, INSIDE, {0, 0, 1}, {1, 0, 0}, 0, 1, 1,
+	 {1, 0, 0}},
+	/* In through the wall's outside and out through the open top: nothing visible. */
+	{"Y inside-only top", {0, 0, 0}, {0, 0, 2}, 1, 1, INSIDE, {-2, 0, REAL_C(0.5)}, {1, 0, 1},
+	 0, 0, 0, {0, 0, 0}},
+	{"K inside-only", {0, 0, 0}, {0, 0, 2}, 1, 0, INSIDE, {-5, 0, 1}, {1, 0, 0}, 0, 1,
+	 REAL_C(5.5), {2, 0, 1}},
+};
+
+static object make_cone(const cone_case *k)
+{
+	object o;
+	vec3 base = vec_make(k->base[0], k->base[1], k->base[2]);
+	vec3 axis = vec_sub(vec_make(k->apex[0], k->apex[1], k->apex[2]), base);
+	real length = vec_length(axis);
+	/* As the parser stores it. */
+	o.kind = SHAPE_CONE;
+	o.flags = (unsigned char)k->flags;
+	o.material = 0;
+	o.line = 0;
+	o.u.cone.base = base;
+	o.u.cone.axis = vec_scale(axis, real_div(REAL_C(1.0), length));
+	o.u.cone.length = length;
+	o.u.cone.base_radius = k->base_radius;
+	o.u.cone.apex_radius = k->apex_radius;
+	o.u.cone.slope = real_div(k->apex_radius - k->base_radius, length);
+	return o;
+}
+
+static void run_case(const cone_case *k)
+{
+	object o = make_cone(k);
+	ray r;
+	hit h;
+	char what[64];
+	double nx = (double)k->n[0], ny = (double)k->n[1], nz = (double)k->n[2];
+	double len = sqrt(nx * nx + ny * ny + nz * nz);
+	int got;
+
+	r.origin = vec_make(k->o[0], k->o[1], k->o[2]);
+	r.dir = vec_normalize(vec_make(k->d[0], k->d[1], k->d[2]));
+	got = cone_intersect(&o, &r, k->tmin, REAL_MAX, &h);
+	snprintf(what, sizeof what, "%s: %s", k->id, k->hit ? "expected a hit" : "expected a miss");
+	if (!test_check(got == k->hit, __FILE__, __LINE__, what))
+		return;
+	snprintf(what, sizeof what, "%s: same answer without a hit record", k->id);
+	test_check(cone_intersect(&o, &r, k->tmin, REAL_MAX, NULL) == got, __FILE__, __LINE__,
+		   what);
+	if (!got)
+		return;
+	snprintf(what, sizeof what, "%s t", k->id);
+	test_check_near((double)h.t, (double)k->t, TOL(2e-6, 1e-12), __FILE__, __LINE__, what);
+	/* The point is on the ray at t. */
+	snprintf(what, sizeof what, "%s point.z", k->id);
+	test_check_near((double)h.point.z, (double)k->o[2] + (double)h.t * (double)r.dir.z,
+			TOL(2e-6, 1e-12), __FILE__, __LINE__, what);
+	snprintf(what, sizeof what, "%s normal.x", k->id);
+	test_check_near((double)h.normal.x, nx / len, TOL(1e-6, 1e-12), __FILE__, __LINE__, what);
+	snprintf(what, sizeof what, "%s normal.y", k->id);
+	test_check_near((double)h.normal.y, ny / len, TOL(1e-6, 1e-12), __FILE__, __LINE__, what);
+	snprintf(what, sizeof what, "%s normal.z", k->id);
+	test_check_near((double)h.normal.z, nz / len, TOL(1e-6, 1e-12), __FILE__, __LINE__, what);
+	snprintf(what, sizeof what, "%s: shading normal = normal", k->id);
+	test_check(h.shading.x == h.normal.x && h.shading.y == h.normal.y &&
+		   h.shading.z == h.normal.z, __FILE__, __LINE__, what);
+}
+
+/* The interval: a hit at t = 4 is outside (0, 3.9). */
+static void test_interval(void)
+{
+	object o = make_cone(&cases[0]);
+	ray r;
+	hit h;
+	r.origin = vec_make(-5, 0, 1);
+	r.dir = vec_make(1, 0, 0);
+	CHECK(!cone_intersect(&o, &r, 0, REAL_C(3.9), &h));
+	CHECK(cone_intersect(&o, &r, 0, REAL_C(4.1), &h));
+	/* Only the far root inside (4.5, 5.9) would do, and it is at 6. */
+	CHECK(!cone_intersect(&o, &r, REAL_C(4.5), REAL_C(5.9), &h));
+	/* Behind the origin: nothing. */
+	r.dir = vec_make(-1, 0, 0);
+	CHECK(!cone_intersect(&o, &r, 0, REAL_MAX, &h));
+}
+
+void suite_cone(void)
+{
+	size_t i;
+	for (i = 0; i < sizeof cases / sizeof cases[0]; i++)
+		run_case(&cases[i]);
+	test_interval();
+}

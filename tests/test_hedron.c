@@ -1,0 +1,335 @@
+/* test_hedron.c - convex polyhedra: the cube cases P01-P13 of numerics.md section 6 and a
+ * seeded watertightness test through edges and vertices.
+ * See LICENSE for copyright and licence. */
+#include <math.h>
+#include <stdio.h>
+
+#include "shape.h"
+#include "test.h"
+
+/* Several megabytes: static, never on the stack. */
+static scene s;
+
+/* Where the cube sits: world = rot local + move; rot's columns are the cube's axes. */
+typedef struct {
+	double rot[3][3];
+	double move[3];
+} frame;
+
+/* The cube |x|, |y|, |z| <= 1 placed by f, as the six half-spaces n.x <= offset in
+ * s.planes[0..6). Built in double, then rounded to real once, as a parser would. */
+static void set_cube(const frame *f)
+{
+	int axis, side;
+	s.plane_count = 0;
+	for (axis = 0; axis < 3; axis++)
+		for (side = 0; side < 2; side++) {
+			double sign = side ? -1.0 : 1.0;
+			double n[3], offset = 1.0;
+			int k;
+			for (k = 0; k < 3; k++) {
+				n[k] = sign * f->rot[k][axis];
+				offset += n[k] * f->move[k];
+			}
+			s.planes[s.plane_count].normal =
+				vec_make((real)n[0], (real)n[1], (real)n[2]);
+			s.planes[s.plane_count].offset = (real)offset;
+			s.plane_count++;
+		}
+}
+
+static const frame unit_cube = {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {0, 0, 0}};
+
+static object cube_object(void)
+{
+	object o;
+	o.kind = SHAPE_HEDRON;
+	o.flags = OBJ_TWO_SIDED;
+	o.material = 0;
+	o.line = 0;
+	o.u.hedron.first = 0;
+	o.u.hedron.count = 6;
+	return o;
+}
+
+static ray make_ray(vec3 origin, vec3 dir)
+{
+	ray r;
+	r.origin = origin;
+	r.dir = vec_normalize(dir);
+	return r;
+}
+
+/* What a row expects of the face normal. */
+enum { NORMAL_ANY, NORMAL_EXACT, NORMAL_PLUS_X_OR_Y };
+enum { MISS, HIT, EITHER };
+
+typedef struct {
+	const char *id;
+	real o[3], d[3];
+	real tmin;
+	int expect;  /* MISS, HIT, or EITHER (degenerate: no NaN, and a hit must be right) */
+	real t;
+	double tol;
+	int normal;  /* NORMAL_* */
+	real n[3];
+} hedron_case;
+
+static const hedron_case cases[] = {
+	{"P01", {0, 0, -5}, {0, 0, 1}, 0, HIT, 4, 0, NORMAL_EXACT, {0, 0, -1}},
+	/* Parallel to the y slab and outside it: vd = 0, vn > 0. */
+	{"P02", {0, 2, -5}, {0, 0, 1}, 0, MISS, 0, 0, NORMAL_ANY, {0, 0, 0}},
+	{"P03", {0, REAL_C(0.5), -5}, {0, 0, 1}, 0, HIT, 4, 0, NORMAL_EXACT, {0, 0, -1}},
+	/* The ray lies in the plane y = 1: either answer, but no NaN. */
+	{"P04", {0, 1, -5}, {0, 0, 1}, 0, EITHER, 4, 0, NORMAL_EXACT, {0, 0, -1}},
+	/* Through the edge x = y = 1: the per-face test leaks here. The ray enters the
+	 * +x and +y faces at once; either is the entry face. */
+	{"P05", {3, 3, REAL_C(0.25)}, {-1, -1, 0}, 0, HIT, REAL_C(2.8284271247461903),
+	 TOL(1e-6, 1e-12), NORMAL_PLUS_X_OR_Y, {0, 0, 0}},
+	/* Through the vertex (1, 1, 1); the catalog's tolerance is 1e-12, float's 4 ulp. */
+	{"P06", {3, 3, 3}, {-1, -1, -1}, 0, HIT, REAL_C(3.46410161513775459), TOL(1e-6, 1e-12),
+	 NORMAL_ANY, {0, 0, 0}},
+	/* Along the edge line x = y = 1: degenerate, Haines keeps it (both slabs touch). */
+	{"P07", {1, 1, -5}, {0, 0, 1}, 0, HIT, 4, 0, NORMAL_EXACT, {0, 0, -1}},
+	/* 1.4e-4 outside the edge x = -1, y = 1. */
+	{"P08", {REAL_C(-2.0) + REAL_C(1e-4), REAL_C(4.0) + REAL_C(1e-4), REAL_C(0.25)},
+	 {1, -1, 0}, 0, MISS, 0, 0, NORMAL_ANY, {0, 0, 0}},
+	/* From inside: the exit. */
+	{"P09", {0, 0, 0}, {0, 0, 1}, 0, HIT, 1, 0, NORMAL_EXACT, {0, 0, 1}},
+	/* On a face, leaving: the published code returns a t = 0 self-hit. */
+	{"P10", {0, 0, 1}, {0, 0, 1}, REAL_C(1e-9), MISS, 0, 0, NORMAL_ANY, {0, 0, 0}},
+	/* On a face, entering: not the face it starts on, but the far one at t = 2. */
+	{"P11", {0, 0, 1}, {0, 0, -1}, REAL_C(1e-9), HIT, 2, 0, NORMAL_EXACT, {0, 0, -1}},
+	/* P05 moved by less than an ulp (or, in long double, by 1e-17 outward in y, which
+	 * still enters at t = 2 sqrt 2 + 1e-17): the same answer. */
+	{"P12", {3, REAL_C(3.0) + REAL_C(1e-17), REAL_C(0.25)}, {-1, -1, 0}, 0, HIT,
+	 REAL_C(2.8284271247461903), TOL(1e-6, 1e-12), NORMAL_PLUS_X_OR_Y, {0, 0, 0}},
+};
+
+static void run_case(const object *o, const hedron_case *k)
+{
+	ray r = make_ray(vec_make(k->o[0], k->o[1], k->o[2]), vec_make(k->d[0], k->d[1], k->d[2]));
+	char what[64];
+	hit h;
+	int got = hedron_intersect(&s, o, &r, k->tmin, REAL_MAX, &h);
+
+	if (k->expect != EITHER) {
+		snprintf(what, sizeof what, "%s: %s", k->id,
+			 k->expect == HIT ? "expected a hit" : "expected a miss");
+		if (!test_check(got == k->expect, __FILE__, __LINE__, what))
+			return;
+	}
+	snprintf(what, sizeof what, "%s: same answer without a hit record", k->id);
+	test_check(hedron_intersect(&s, o, &r, k->tmin, REAL_MAX, NULL) == got, __FILE__, __LINE__,
+		   what);
+	if (!got)
+		return;
+	snprintf(what, sizeof what, "%s t", k->id);
+	test_check_near((double)h.t, (double)k->t, k->tol, __FILE__, __LINE__, what);
+	if (k->normal == NORMAL_EXACT) {
+		snprintf(what, sizeof what, "%s: normal (%g, %g, %g)", k->id, (double)k->n[0],
+			 (double)k->n[1], (double)k->n[2]);
+		test_check(h.normal.x == k->n[0] && h.normal.y == k->n[1] && h.normal.z == k->n[2],
+			   __FILE__, __LINE__, what);
+	} else if (k->normal == NORMAL_PLUS_X_OR_Y) {
+		snprintf(what, sizeof what, "%s: normal +x or +y", k->id);
+		test_check(h.normal.z == 0 && ((h.normal.x == 1 && h.normal.y == 0) ||
+					       (h.normal.x == 0 && h.normal.y == 1)),
+			   __FILE__, __LINE__, what);
+	}
+}
+
+/* P13: a zero direction must be rejected where rays are made; normalising it gives NaN
+ * (rt's vec_normalize keeps it zero). Either way the polyhedron must answer "miss". */
+static void test_bad_direction(const object *o)
+{
+	ray r;
+	r.dir = vec_make(REAL_C(NAN), REAL_C(NAN), REAL_C(NAN));
+	r.origin = vec_make(0, 0, -5);
+	CHECK(!hedron_intersect(&s, o, &r, 0, REAL_MAX, NULL));
+	r.origin = vec_make(0, 0, 0);
+	CHECK(!hedron_intersect(&s, o, &r, 0, REAL_MAX, NULL));
+	/* One NaN component is enough to poison every plane it meets. */
+	r.dir = vec_make(REAL_C(NAN), 0, 1);
+	CHECK(!hedron_intersect(&s, o, &r, 0, REAL_MAX, NULL));
+	r.dir = vec_normalize(vec_make(0, 0, 0));
+	CHECK(!hedron_intersect(&s, o, &r, 0, REAL_MAX, NULL));
+	r.origin = vec_make(0, 0, -5);
+	CHECK(!hedron_intersect(&s, o, &r, 0, REAL_MAX, NULL));
+}
+
+/* ---- watertightness ------------------------------------------------------------ */
+
+static unsigned long long lcg_state;
+
+/* Knuth's MMIX LCG; the top 53 bits as a double in [0, 1). */
+static double rnd(void)
+{
+	lcg_state = lcg_state * 6364136223846793005ULL + 1442695040888963407ULL;
+	return (double)(lcg_state >> 11) * (1.0 / 9007199254740992.0);
+}
+
+static double rnd_range(double lo, double hi) { return lo + (hi - lo) * rnd(); }
+static double rnd_sign(void) { return rnd() < 0.5 ? -1.0 : 1.0; }
+
+/* A point (moved) or a direction (only rotated) from cube to world coordinates. */
+static void to_world(const frame *f, const double local[3], double w[3], int is_point)
+{
+	int i;
+	for (i = 0; i < 3; i++)
+		w[i] = f->rot[i][0] * local[0] + f->rot[i][1] * local[1] + f->rot[i][2] * local[2] +
+		       (is_point ? f->move[i] : 0.0);
+}
+
+static void normalize3(double v[3])
+{
+	double len = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+	v[0] /= len;
+	v[1] /= len;
+	v[2] /= len;
+}
+
+static vec3 to_vec(const double v[3]) { return vec_make((real)v[0], (real)v[1], (real)v[2]); }
+
+/* A ray whose origin lies `back` before the world point p along the unit direction dir. */
+static ray ray_through(const double p[3], const double dir[3], double back)
+{
+	double o[3];
+	int i;
+	for (i = 0; i < 3; i++)
+		o[i] = p[i] - back * dir[i];
+	return make_ray(to_vec(o), to_vec(dir));
+}
+
+/* A point on a cube edge (vertex = 0) or a vertex (vertex = 1), in cube coordinates,
+ * with the signs of its fixed coordinates; `free_axis` is the edge's direction. */
+static void pick_boundary_point(int vertex, double local[3], double signs[3], int *free_axis)
+{
+	int i;
+	*free_axis = vertex ? -1 : (int)(rnd() * 3.0);
+	for (i = 0; i < 3; i++) {
+		signs[i] = i == *free_axis ? 0.0 : rnd_sign();
+		local[i] = i == *free_axis ? rnd_range(-0.95, 0.95) : signs[i];
+	}
+}
+
+/* Rays through edges and vertices into the interior must all hit (0 leaks), enter on a
+ * face that meets there, at that point; rays passing 1e-3 outside must all miss. */
+static void watertight(const char *name, const frame *f)
+{
+	enum { RAYS = 20000 };
+	object o = cube_object();
+	int leaks = 0, wrong_face = 0, wrong_point = 0, false_hits = 0, vertex, n;
+	char what[96];
+
+	set_cube(f);
+	for (vertex = 0; vertex < 2; vertex++) {
+		for (n = 0; n < RAYS; n++) {
+			double local[3], signs[3], target[3], dl[3], p[3], dir[3], face[3];
+			int free_axis, i, face_ok = 0;
+			ray r;
+			hit h;
+			pick_boundary_point(vertex, local, signs, &free_axis);
+			/* Aim at a random interior point: the exact answer is "hit". */
+			for (i = 0; i < 3; i++) {
+				target[i] = rnd_range(-0.9, 0.9);
+				dl[i] = target[i] - local[i];
+			}
+			to_world(f, local, p, 1);
+			to_world(f, dl, dir, 0);
+			normalize3(dir);
+			r = ray_through(p, dir, rnd_range(0.5, 10.0));
+			if (!hedron_intersect(&s, &o, &r, 0, REAL_MAX, &h)) {
+				leaks++;
+				continue;
+			}
+			/* The entry face is one of those meeting at the edge or vertex. */
+			for (i = 0; i < 3; i++) {
+				double ln[3] = {0, 0, 0};
+				if (signs[i] == 0.0)
+					continue;
+				ln[i] = signs[i];
+				to_world(f, ln, face, 0);
+				if (fabs((double)h.normal.x - face[0]) < 1e-6 &&
+				    fabs((double)h.normal.y - face[1]) < 1e-6 &&
+				    fabs((double)h.normal.z - face[2]) < 1e-6)
+					face_ok = 1;
+			}
+			wrong_face += !face_ok;
+			/* Where: at p, up to the ray's rounding (grazing entries amplify it). */
+			if (!(fabs((double)h.point.x - p[0]) < TOL(1e-3, 1e-9) &&
+			      fabs((double)h.point.y - p[1]) < TOL(1e-3, 1e-9) &&
+			      fabs((double)h.point.z - p[2]) < TOL(1e-3, 1e-9)))
+				wrong_point++;
+		}
+		/* 1e-3 outside the edge or vertex, in the plane through it that separates it
+		 * from the cube: every such ray misses the cube by 1e-3. */
+		for (n = 0; n < RAYS; n++) {
+			double local[3], signs[3], away[3], along[3], p[3], dir[3];
+			double len = vertex ? sqrt(3.0) : sqrt(2.0), dot = 0.0;
+			int free_axis, i;
+			ray r;
+			pick_boundary_point(vertex, local, signs, &free_axis);
+			for (i = 0; i < 3; i++) {
+				away[i] = signs[i] / len;
+				local[i] += 1e-3 * away[i];
+				along[i] = rnd_range(-1.0, 1.0);
+				dot += along[i] * away[i];
+			}
+			/* Remove the component along `away`: a random direction in the plane. */
+			for (i = 0; i < 3; i++)
+				along[i] -= dot * away[i];
+			to_world(f, local, p, 1);
+			to_world(f, along, dir, 0);
+			normalize3(dir);
+			r = ray_through(p, dir, rnd_range(0.5, 10.0));
+			false_hits += hedron_intersect(&s, &o, &r, 0, REAL_MAX, NULL);
+		}
+	}
+	snprintf(what, sizeof what, "%s: leaks through edges and vertices", name);
+	test_check_int(leaks, 0, __FILE__, __LINE__, what);
+	snprintf(what, sizeof what, "%s: entry face not at the edge or vertex", name);
+	test_check_int(wrong_face, 0, __FILE__, __LINE__, what);
+	snprintf(what, sizeof what, "%s: entry point away from the edge or vertex", name);
+	test_check_int(wrong_point, 0, __FILE__, __LINE__, what);
+	snprintf(what, sizeof what, "%s: hits by rays 1e-3 outside", name);
+	test_check_int(false_hits, 0, __FILE__, __LINE__, what);
+}
+
+/* The rotation R = Rz(c) Ry(b) Rx(a), built in double. */
+static void rotation(double a, double b, double c, double rot[3][3])
+{
+	double ca = cos(a), sa = sin(a), cb = cos(b), sb = sin(b), cc = cos(c), sc = sin(c);
+	rot[0][0] = cc * cb;
+	rot[0][1] = cc * sb * sa - sc * ca;
+	rot[0][2] = cc * sb * ca + sc * sa;
+	rot[1][0] = sc * cb;
+	rot[1][1] = sc * sb * sa + cc * ca;
+	rot[1][2] = sc * sb * ca - cc * sa;
+	rot[2][0] = -sb;
+	rot[2][1] = cb * sa;
+	rot[2][2] = cb * ca;
+}
+
+void suite_hedron(void)
+{
+	frame turned;
+	object o = cube_object();
+	size_t i;
+
+	set_cube(&unit_cube);
+	for (i = 0; i < sizeof cases / sizeof cases[0]; i++)
+		run_case(&o, &cases[i]);
+	test_bad_direction(&o);
+
+	lcg_state = 20240601u;
+	watertight("axis-aligned cube", &unit_cube);
+	rotation(0.3, 0.7, 1.1, turned.rot);
+	turned.move[0] = turned.move[1] = turned.move[2] = 0.0;
+	watertight("rotated cube", &turned);
+	/* The catalog's rotated cube away from the origin. */
+	turned.move[0] = 3.7;
+	turned.move[1] = -2.1;
+	turned.move[2] = 11.3;
+	watertight("rotated cube at (3.7, -2.1, 11.3)", &turned);
+}

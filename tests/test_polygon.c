@@ -1,0 +1,577 @@
+/* test_polygon.c - polygons and patches: the cases G01-G11 of numerics.md section 6, with a
+ * seeded test that points on shared edges of a polygon grid lie in exactly one polygon.
+ * See LICENSE for copyright and licence. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "diag.h"
+#include "parse.h"
+#include "shape.h"
+#include "test.h"
+
+/* Several megabytes: static, never on the stack. */
+static scene s;
+
+/* Appends a vertex and its projection dropping `axis`, as the parser stores both. */
+static void add_vertex(vec3 v, int axis)
+{
+	s.vertices[s.vertex_count] = v;
+	s.projected[s.vertex_count] = polygon_project(v, axis);
+	s.vertex_count++;
+}
+
+/* Appends count (x, y) pairs as vertices in the plane z = 0; returns the first index. */
+static int add_xy(const real *xy, int count)
+{
+	int first = s.vertex_count, i;
+	for (i = 0; i < count; i++)
+		add_vertex(vec_make(xy[2 * i], xy[2 * i + 1], 0), 2);
+	return first;
+}
+
+static object polygon_object(int first, int count, vec3 normal, real offset, int axis,
+			     unsigned flags)
+{
+	object o;
+	o.kind = SHAPE_POLYGON;
+	o.flags = (unsigned char)flags;
+	o.material = 0;
+	o.line = 0;
+	o.u.polygon.normal = normal;
+	o.u.polygon.offset = offset;
+	o.u.polygon.first = first;
+	o.u.polygon.count = count;
+	o.u.polygon.axis = axis;
+	return o;
+}
+
+/* A polygon in z = 0 facing +z (dropping z projects it to (x, y)). */
+static object xy_polygon(const real *xy, int count, unsigned flags)
+{
+	return polygon_object(add_xy(xy, count), count, vec_make(0, 0, 1), 0, 2, flags);
+}
+
+static ray make_ray(vec3 origin, vec3 dir)
+{
+	ray r;
+	r.origin = origin;
+	r.dir = vec_normalize(dir);
+	return r;
+}
+
+static int contains(const object *o, real x, real y)
+{
+	return polygon_contains(s.vertices + o->u.polygon.first, o->u.polygon.count, 2, x, y);
+}
+
+static const real unit_square[] = {0, 0, 1, 0, 1, 1, 0, 1};
+
+/* G01, G02, G06: inside, and the half-open rule on the boundary: right and top edges
+ * (and their corner) belong to the square, left and bottom ones do not. */
+static void test_square(void)
+{
+	static const real repeated[] = {0, 0, 1, 0, 1, 0, 1, 1, 0, 1};
+	static const struct {
+		real x, y;
+		int inside;
+	} points[] = {
+		{REAL_C(0.5), REAL_C(0.5), 1}, {1, REAL_C(0.5), 1},           {REAL_C(0.5), 1, 1},
+		{1, 1, 1},                     {0, 0, 0},                     {1, 0, 0},
+		{0, 1, 0},                     {REAL_C(0.5), 0, 0},           {0, REAL_C(0.5), 0},
+		{REAL_C(1.5), REAL_C(0.5), 0}, {REAL_C(-0.5), REAL_C(0.5), 0}, {REAL_C(0.5), 2, 0},
+	};
+	object square, twice;
+	ray r;
+	hit h;
+	size_t i;
+	char what[64];
+
+	s.vertex_count = 0;
+	square = xy_polygon(unit_square, 4, 0);
+	/* G06: a repeated vertex is a zero-length edge and changes nothing. */
+	twice = xy_polygon(repeated, 5, 0);
+	for (i = 0; i < sizeof points / sizeof points[0]; i++) {
+		snprintf(what, sizeof what, "G02: (%g, %g) %s", (double)points[i].x,
+			 (double)points[i].y, points[i].inside ? "inside" : "outside");
+		test_check(contains(&square, points[i].x, points[i].y) == points[i].inside,
+			   __FILE__, __LINE__, what);
+		snprintf(what, sizeof what, "G06: (%g, %g) %s", (double)points[i].x,
+			 (double)points[i].y, points[i].inside ? "inside" : "outside");
+		test_check(contains(&twice, points[i].x, points[i].y) == points[i].inside, __FILE__,
+			   __LINE__, what);
+	}
+
+	/* G01 through the ray: O(0.5, 0.5, 1) D(0, 0, -1) hits at t = 1. */
+	r = make_ray(vec_make(REAL_C(0.5), REAL_C(0.5), 1), vec_make(0, 0, -1));
+	CHECK(polygon_intersect(&s, &square, &r, 0, REAL_MAX, &h));
+	CHECK_NEAR(h.t, 1.0, 0.0);
+	CHECK_NEAR(h.point.x, 0.5, 0.0);
+	CHECK_NEAR(h.point.y, 0.5, 0.0);
+	CHECK_NEAR(h.point.z, 0.0, 0.0);
+	CHECK(h.normal.x == 0 && h.normal.y == 0 && h.normal.z == 1);
+	CHECK(h.shading.x == 0 && h.shading.y == 0 && h.shading.z == 1);
+	CHECK(polygon_intersect(&s, &square, &r, 0, REAL_MAX, NULL));
+	CHECK(!polygon_intersect(&s, &square, &r, 0, REAL_C(0.5), &h));
+	CHECK(!polygon_intersect(&s, &square, &r, REAL_C(1.5), REAL_MAX, &h));
+	/* An opaque polygon is one-sided: from behind it is not there; two-sided it is. */
+	r = make_ray(vec_make(REAL_C(0.5), REAL_C(0.5), -1), vec_make(0, 0, 1));
+	CHECK(!polygon_intersect(&s, &square, &r, 0, REAL_MAX, &h));
+	square.flags = OBJ_TWO_SIDED;
+	CHECK(polygon_intersect(&s, &square, &r, 0, REAL_MAX, &h));
+	CHECK_NEAR(h.t, 1.0, 0.0);
+	/* Beside the square, the plane is hit but the point is outside. */
+	r = make_ray(vec_make(REAL_C(1.5), REAL_C(0.5), 1), vec_make(0, 0, -1));
+	CHECK(!polygon_intersect(&s, &square, &r, 0, REAL_MAX, &h));
+}
+
+/* G07, G08: a ray parallel to the plane, or lying in it, misses; the unguarded division
+ * gives -inf or 0/0 = NaN. One-sided and two-sided alike. */
+static void test_parallel(void)
+{
+	object square;
+	ray r;
+	hit h;
+	unsigned flags;
+
+	s.vertex_count = 0;
+	square = xy_polygon(unit_square, 4, 0);
+	for (flags = 0; flags <= OBJ_TWO_SIDED; flags += OBJ_TWO_SIDED) {
+		square.flags = (unsigned char)flags;
+		r = make_ray(vec_make(REAL_C(0.5), REAL_C(0.5), 1), vec_make(1, 0, 0));
+		CHECK(!polygon_intersect(&s, &square, &r, 0, REAL_MAX, &h));
+		r = make_ray(vec_make(-1, REAL_C(0.5), 0), vec_make(1, 0, 0));
+		CHECK(!polygon_intersect(&s, &square, &r, 0, REAL_MAX, &h));
+	}
+}
+
+/* G03, G04: a point on a shared edge or vertex belongs to exactly one polygon. */
+static void test_shared(void)
+{
+	static const real right[] = {1, 0, 2, 0, 2, 1, 1, 1};
+	static const real top_left[] = {0, 1, 1, 1, 1, 2, 0, 2};
+	static const real top_right[] = {1, 1, 2, 1, 2, 2, 1, 2};
+	object a, b, c, d;
+
+	s.vertex_count = 0;
+	a = xy_polygon(unit_square, 4, 0);
+	b = xy_polygon(right, 4, 0);
+	c = xy_polygon(top_left, 4, 0);
+	d = xy_polygon(top_right, 4, 0);
+	/* G03: (1, 0.5) is the right edge of a, the left edge of b. */
+	CHECK_INT(contains(&a, 1, REAL_C(0.5)), 1);
+	CHECK_INT(contains(&b, 1, REAL_C(0.5)), 0);
+	/* G04: (1, 1), the corner of all four, is the top-right corner of a only. */
+	CHECK_INT(contains(&a, 1, 1), 1);
+	CHECK_INT(contains(&b, 1, 1), 0);
+	CHECK_INT(contains(&c, 1, 1), 0);
+	CHECK_INT(contains(&d, 1, 1), 0);
+}
+
+/* G09: the L (0,0)(2,0)(2,1)(1,1)(1,2)(0,2) is concave. G10: a pentagram's centre is
+ * outside by the even-odd rule (its winding number is 2); its points are inside. */
+static void test_concave(void)
+{
+	static const real ell[] = {0, 0, 2, 0, 2, 1, 1, 1, 1, 2, 0, 2};
+	real star[10];
+	object l, p;
+	int k;
+
+	s.vertex_count = 0;
+	l = xy_polygon(ell, 6, 0);
+	CHECK_INT(contains(&l, REAL_C(1.5), REAL_C(1.5)), 0);
+	CHECK_INT(contains(&l, REAL_C(0.5), REAL_C(1.5)), 1);
+	CHECK_INT(contains(&l, REAL_C(1.5), REAL_C(0.5)), 1);
+	/* {5/2}: every second vertex of a unit pentagon, starting at the top. */
+	for (k = 0; k < 5; k++) {
+		double angle = 1.5707963267948966 + k * 2.0 * 2.0 * 3.1415926535897932 / 5.0;
+		star[2 * k] = (real)cos(angle);
+		star[2 * k + 1] = (real)sin(angle);
+	}
+	p = xy_polygon(star, 5, 0);
+	CHECK_INT(contains(&p, 0, 0), 0);
+	CHECK_INT(contains(&p, 0, REAL_C(0.9)), 1);
+	CHECK_INT(contains(&p, 0, REAL_C(-0.5)), 0);
+}
+
+/* ---- G05 through the parser --------------------------------------------------- */
+
+typedef struct {
+	const char *text;
+	size_t at;
+} text_reader;
+
+static int read_text(void *ctx)
+{
+	text_reader *t = ctx;
+	return t->text[t->at] ? (unsigned char)t->text[t->at++] : -1;
+}
+
+/* Counts the parser's zero-area warnings (other messages are not this test's business). */
+static int zero_area_warnings;
+
+static void capture(void *ctx, const char *message)
+{
+	(void)ctx;
+	if (strstr(message, "zero area"))
+		zero_area_warnings++;
+}
+
+/* G05: collinear vertices have a zero Newell normal; the parser drops the polygon with a
+ * warning instead of dividing by its length. */
+static void test_collinear(void)
+{
+	text_reader t;
+	int ok;
+	t.text = "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 45\nhither 1\nresolution 4 4\n"
+		 "p 3\n0 0 0\n1 0 0\n2 0 0\n"
+		 "p 3\n0 0 0\n1 0 0\n0 1 0\n";
+	t.at = 0;
+	zero_area_warnings = 0;
+	diag_set_sink(capture, NULL);
+	ok = parse_scene(&s, "g05.nff", read_text, &t);
+	diag_set_sink(NULL, NULL);
+	CHECK(ok);
+	/* Only the second, proper triangle is left, with a unit normal. */
+	CHECK_INT(s.object_count, 1);
+	CHECK_INT(zero_area_warnings, 1);
+	CHECK_NEAR(s.objects[0].u.polygon.normal.z, 1.0, 0.0);
+}
+
+/* ---- G11: random points on shared edges of a grid --------------------------------- */
+
+static unsigned long long lcg_state;
+
+/* Knuth's MMIX LCG; the top 53 bits as a double in [0, 1). */
+static double rnd(void)
+{
+	lcg_state = lcg_state * 6364136223846793005ULL + 1442695040888963407ULL;
+	return (double)(lcg_state >> 11) * (1.0 / 9007199254740992.0);
+}
+
+enum { CELLS = 8, MAX_EDGES = 4 * CELLS * CELLS };
+
+/* A jittered lattice cut into quads and triangles: the plane tiled without gaps. */
+typedef struct {
+	double uv[CELLS + 1][CELLS + 1][2];
+	int polygons;        /* objects s.objects[0 .. polygons) */
+	double edge[MAX_EDGES][2][2]; /* interior edges (shared by two polygons) */
+	int edges;
+} grid;
+
+static int convex(const double *a, const double *b, const double *c, const double *d)
+{
+	const double *q[4];
+	int i;
+	q[0] = a;
+	q[1] = b;
+	q[2] = c;
+	q[3] = d;
+	for (i = 0; i < 4; i++) {
+		const double *p0 = q[i], *p1 = q[(i + 1) % 4], *p2 = q[(i + 2) % 4];
+		if ((p1[0] - p0[0]) * (p2[1] - p1[1]) - (p1[1] - p0[1]) * (p2[0] - p1[0]) <= 0.0)
+			return 0;
+	}
+	return 1;
+}
+
+static void add_edge(grid *g, const double *a, const double *b)
+{
+	memcpy(g->edge[g->edges][0], a, sizeof g->edge[0][0]);
+	memcpy(g->edge[g->edges][1], b, sizeof g->edge[0][1]);
+	g->edges++;
+}
+
+/* The grid's polygons go into s.objects with vertices from `place`, which maps the
+ * plane's (u, v) to a scene point; every polygon copies the same rounded vertices. */
+typedef vec3 (*place_fn)(const double *uv);
+
+static void add_grid_polygon(grid *g, place_fn place, const double *const *corner, int count,
+			     vec3 normal, real offset, int axis)
+{
+	int first = s.vertex_count, i;
+	for (i = 0; i < count; i++)
+		add_vertex(place(corner[i]), axis);
+	s.objects[g->polygons++] = polygon_object(first, count, normal, offset, axis, 0);
+}
+
+static void build_grid(grid *g, place_fn place, vec3 normal, real offset, int axis)
+{
+	int i, j;
+	s.vertex_count = 0;
+	g->polygons = 0;
+	g->edges = 0;
+	for (i = 0; i <= CELLS; i++)
+		for (j = 0; j <= CELLS; j++) {
+			/* Jitter of at most 0.2 keeps every cell simple and the cells a tiling. */
+			g->uv[i][j][0] = i + 0.4 * (rnd() - 0.5);
+			g->uv[i][j][1] = j + 0.4 * (rnd() - 0.5);
+		}
+	for (i = 0; i < CELLS; i++)
+		for (j = 0; j < CELLS; j++) {
+			const double *q[4];
+			double pick = rnd();
+			q[0] = g->uv[i][j];
+			q[1] = g->uv[i + 1][j];
+			q[2] = g->uv[i + 1][j + 1];
+			q[3] = g->uv[i][j + 1];
+			/* Interior lattice edges: the cell's left and bottom ones. */
+			if (i > 0)
+				add_edge(g, q[3], q[0]);
+			if (j > 0)
+				add_edge(g, q[0], q[1]);
+			if (pick < 0.4 || !convex(q[0], q[1], q[2], q[3])) {
+				add_grid_polygon(g, place, q, 4, normal, offset, axis);
+			} else {
+				/* Two triangles along one diagonal, listed in opposite orders. */
+				const double *t1[3], *t2[3];
+				int k = pick < 0.7 ? 0 : 1;
+				t1[0] = q[k];
+				t1[1] = q[k + 1];
+				t1[2] = q[k + 2];
+				t2[0] = q[k + 2];
+				t2[1] = q[(k + 3) % 4];
+				t2[2] = q[k];
+				add_grid_polygon(g, place, t1, 3, normal, offset, axis);
+				add_grid_polygon(g, place, t2, 3, normal, offset, axis);
+				add_edge(g, q[k], q[k + 2]);
+			}
+		}
+}
+
+/* A random point on a random shared edge (1 in 8: an interior lattice vertex exactly). */
+static void pick_on_edge(const grid *g, double uv[2])
+{
+	if (rnd() < 0.125) {
+		int i = 1 + (int)(rnd() * (CELLS - 1)), j = 1 + (int)(rnd() * (CELLS - 1));
+		uv[0] = g->uv[i][j][0];
+		uv[1] = g->uv[i][j][1];
+	} else {
+		const double(*e)[2] = g->edge[(int)(rnd() * g->edges)];
+		double t = rnd();
+		uv[0] = e[0][0] + t * (e[1][0] - e[0][0]);
+		uv[1] = e[0][1] + t * (e[1][1] - e[0][1]);
+	}
+}
+
+static vec3 place_flat(const double *uv) { return vec_make((real)uv[0], (real)uv[1], 0); }
+
+/* A tilted plane through (3.7, -2.1, 11.3) spanned by e1, e2; its normal is mostly along
+ * x, so the polygons project onto (y, z). */
+static const double tilt_origin[3] = {3.7, -2.1, 11.3};
+static const double tilt_e1[3] = {-0.36, 0.48, 0.8};
+static const double tilt_e2[3] = {0.0, -0.8, 0.6};
+
+static void tilt_point(const double *uv, double p[3])
+{
+	int k;
+	for (k = 0; k < 3; k++)
+		p[k] = tilt_origin[k] + uv[0] * tilt_e1[k] + uv[1] * tilt_e2[k];
+}
+
+static vec3 place_tilted(const double *uv)
+{
+	double p[3];
+	tilt_point(uv, p);
+	return vec_make((real)p[0], (real)p[1], (real)p[2]);
+}
+
+/* G11: every point on a shared edge is inside exactly one polygon of the grid, both in
+ * the projection and through rays that hit the point from random directions. */
+static void test_grid(void)
+{
+	enum { POINTS = 100000 };
+	static grid g;
+	double normal[3], len;
+	vec3 n;
+	real offset;
+	int neither = 0, both = 0, n_ray_neither = 0, n_ray_both = 0, wrong_t = 0, k, i;
+
+	lcg_state = 1618033988u;
+	build_grid(&g, place_flat, vec_make(0, 0, 1), 0, 2);
+	for (k = 0; k < POINTS; k++) {
+		double uv[2];
+		int count = 0;
+		real x, y;
+		pick_on_edge(&g, uv);
+		x = (real)uv[0];
+		y = (real)uv[1];
+		for (i = 0; i < g.polygons; i++)
+			count += contains(&s.objects[i], x, y);
+		neither += count == 0;
+		both += count > 1;
+	}
+	CHECK_INT(neither, 0);
+	CHECK_INT(both, 0);
+
+	/* The same in a tilted plane, through polygon_intersect. All polygons share one
+	 * plane (unit normal e1 x e2, offset through the plane's origin), as coplanar
+	 * polygons of a scene do, so they all compute the same hit point. */
+	normal[0] = tilt_e1[1] * tilt_e2[2] - tilt_e1[2] * tilt_e2[1];
+	normal[1] = tilt_e1[2] * tilt_e2[0] - tilt_e1[0] * tilt_e2[2];
+	normal[2] = tilt_e1[0] * tilt_e2[1] - tilt_e1[1] * tilt_e2[0];
+	len = sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+	for (i = 0; i < 3; i++)
+		normal[i] /= len;
+	n = vec_make((real)normal[0], (real)normal[1], (real)normal[2]);
+	offset = (real)(normal[0] * tilt_origin[0] + normal[1] * tilt_origin[1] +
+			normal[2] * tilt_origin[2]);
+	/* Project along the normal's largest component (x here), as the parser does. */
+	CHECK(fabs(normal[0]) > fabs(normal[1]) && fabs(normal[0]) > fabs(normal[2]));
+	build_grid(&g, place_tilted, n, offset, 0);
+	for (k = 0; k < POINTS; k++) {
+		double uv[2], p[3], w[3], cosine, back = 1.0 + 19.0 * rnd();
+		int count = 0;
+		ray r;
+		hit h;
+		pick_on_edge(&g, uv);
+		tilt_point(uv, p);
+		/* A random direction on the front side, not grazing (cos >= 0.2). */
+		do {
+			for (i = 0; i < 3; i++)
+				w[i] = 2.0 * rnd() - 1.0;
+			len = sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+			cosine = w[0] * normal[0] + w[1] * normal[1] + w[2] * normal[2];
+			cosine = len > 0.0 ? cosine / len : 0.0;
+		} while (len > 1.0 || cosine < 0.2);
+		for (i = 0; i < 3; i++)
+			w[i] /= len;
+		r = make_ray(vec_make((real)(p[0] + back * w[0]), (real)(p[1] + back * w[1]),
+				      (real)(p[2] + back * w[2])),
+			     vec_make((real)-w[0], (real)-w[1], (real)-w[2]));
+		for (i = 0; i < g.polygons; i++)
+			if (polygon_intersect(&s, &s.objects[i], &r, 0, REAL_MAX, &h)) {
+				count++;
+				if (!(fabs((double)h.t - back) < TOL(1e-4, 1e-10) * back))
+					wrong_t++;
+			}
+		n_ray_neither += count == 0;
+		n_ray_both += count > 1;
+	}
+	CHECK_INT(n_ray_neither, 0);
+	CHECK_INT(n_ray_both, 0);
+	CHECK_INT(wrong_t, 0);
+}
+
+/* Polygons facing along x and y drop those coordinates instead. */
+static void test_other_axes(void)
+{
+	object o;
+	ray r;
+	hit h;
+	int first;
+
+	s.vertex_count = 0;
+	/* The unit square in the plane x = 2: (y, z) = (0,0) (1,0) (1,1) (0,1), facing +x. */
+	first = s.vertex_count;
+	add_vertex(vec_make(2, 0, 0), 0);
+	add_vertex(vec_make(2, 1, 0), 0);
+	add_vertex(vec_make(2, 1, 1), 0);
+	add_vertex(vec_make(2, 0, 1), 0);
+	o = polygon_object(first, 4, vec_make(1, 0, 0), 2, 0, 0);
+	r = make_ray(vec_make(5, REAL_C(0.25), REAL_C(0.75)), vec_make(-1, 0, 0));
+	CHECK(polygon_intersect(&s, &o, &r, 0, REAL_MAX, &h));
+	CHECK_NEAR(h.t, 3.0, 0.0);
+	r = make_ray(vec_make(5, REAL_C(1.25), REAL_C(0.75)), vec_make(-1, 0, 0));
+	CHECK(!polygon_intersect(&s, &o, &r, 0, REAL_MAX, &h));
+
+	/* The same square in the plane y = -3, facing -y. */
+	first = s.vertex_count;
+	add_vertex(vec_make(0, -3, 0), 1);
+	add_vertex(vec_make(0, -3, 1), 1);
+	add_vertex(vec_make(1, -3, 1), 1);
+	add_vertex(vec_make(1, -3, 0), 1);
+	o = polygon_object(first, 4, vec_make(0, -1, 0), 3, 1, 0);
+	r = make_ray(vec_make(REAL_C(0.5), -7, REAL_C(0.5)), vec_make(0, 1, 0));
+	CHECK(polygon_intersect(&s, &o, &r, 0, REAL_MAX, &h));
+	CHECK_NEAR(h.t, 4.0, 0.0);
+	CHECK(h.normal.x == 0 && h.normal.y == -1 && h.normal.z == 0);
+	/* From behind, one-sided: nothing. */
+	r = make_ray(vec_make(REAL_C(0.5), 1, REAL_C(0.5)), vec_make(0, -1, 0));
+	CHECK(!polygon_intersect(&s, &o, &r, 0, REAL_MAX, &h));
+}
+
+/* Patches: the shading normal is the barycentric blend of the vertex normals of the fan
+ * triangle holding the hit; the geometric normal stays the face's. */
+static void check_patch_normal(const object *o, real x, real y, const double expect[3])
+{
+	ray r = make_ray(vec_make(x, y, 1), vec_make(0, 0, -1));
+	double len = sqrt(expect[0] * expect[0] + expect[1] * expect[1] + expect[2] * expect[2]);
+	hit h;
+	if (!CHECK(polygon_intersect(&s, o, &r, 0, REAL_MAX, &h)))
+		return;
+	CHECK(h.normal.x == 0 && h.normal.y == 0 && h.normal.z == 1);
+	CHECK_NEAR(h.shading.x, expect[0] / len, TOL(1e-6, 1e-14));
+	CHECK_NEAR(h.shading.y, expect[1] / len, TOL(1e-6, 1e-14));
+	CHECK_NEAR(h.shading.z, expect[2] / len, TOL(1e-6, 1e-14));
+}
+
+static void test_patch(void)
+{
+	const double r2 = 0.70710678118654752, r3 = 0.57735026918962576;
+	object tri, quad;
+	double e[3];
+	int first;
+
+	s.vertex_count = 0;
+	/* Triangle (0,0) (1,0) (1,1) with normals (0,0,1), (1,0,1)/sqrt 2, (1,1,1)/sqrt 3.
+	 * At (x, y) the barycentric weights are 1 - x, x - y, y. */
+	tri = xy_polygon(unit_square, 3, OBJ_TWO_SIDED);
+	tri.kind = SHAPE_PATCH;
+	first = tri.u.polygon.first;
+	s.normals[first] = vec_make(0, 0, 1);
+	s.normals[first + 1] = vec_make((real)r2, 0, (real)r2);
+	s.normals[first + 2] = vec_make((real)r3, (real)r3, (real)r3);
+	/* (0.75, 0.25): weights 0.25, 0.5, 0.25. */
+	e[0] = 0.5 * r2 + 0.25 * r3;
+	e[1] = 0.25 * r3;
+	e[2] = 0.25 + 0.5 * r2 + 0.25 * r3;
+	check_patch_normal(&tri, REAL_C(0.75), REAL_C(0.25), e);
+	/* Near a vertex the blend tends to that vertex's normal. */
+	{
+		real x = REAL_C(0.999999), y = REAL_C(0.999998);
+		double a = 1.0 - (double)x, b = (double)x - (double)y, c = (double)y;
+		e[0] = b * r2 + c * r3;
+		e[1] = c * r3;
+		e[2] = a + b * r2 + c * r3;
+		check_patch_normal(&tri, x, y, e);
+	}
+
+	/* The unit square as a patch: two fan triangles (0,1,2) and (0,2,3). Normals
+	 * (0,0,1), (1,0,1)/sqrt 2, (1,1,1)/sqrt 3, (0,1,1)/sqrt 2. */
+	quad = xy_polygon(unit_square, 4, OBJ_TWO_SIDED);
+	quad.kind = SHAPE_PATCH;
+	first = quad.u.polygon.first;
+	s.normals[first] = vec_make(0, 0, 1);
+	s.normals[first + 1] = vec_make((real)r2, 0, (real)r2);
+	s.normals[first + 2] = vec_make((real)r3, (real)r3, (real)r3);
+	s.normals[first + 3] = vec_make(0, (real)r2, (real)r2);
+	/* (0.25, 0.75) is in the second fan triangle, 0.25 v0 + 0.25 v2 + 0.5 v3. */
+	e[0] = 0.25 * r3;
+	e[1] = 0.25 * r3 + 0.5 * r2;
+	e[2] = 0.25 + 0.25 * r3 + 0.5 * r2;
+	check_patch_normal(&quad, REAL_C(0.25), REAL_C(0.75), e);
+	/* (0.75, 0.25) is in the first, as for the triangle. */
+	e[0] = 0.5 * r2 + 0.25 * r3;
+	e[1] = 0.25 * r3;
+	e[2] = 0.25 + 0.5 * r2 + 0.25 * r3;
+	check_patch_normal(&quad, REAL_C(0.75), REAL_C(0.25), e);
+	/* A plain polygon over the same vertices ignores the normals. */
+	quad.kind = SHAPE_POLYGON;
+	e[0] = e[1] = 0.0;
+	e[2] = 1.0;
+	check_patch_normal(&quad, REAL_C(0.25), REAL_C(0.75), e);
+}
+
+void suite_polygon(void)
+{
+	scene_init(&s, "polygon");
+	test_square();
+	test_parallel();
+	test_shared();
+	test_concave();
+	test_other_axes();
+	test_grid();
+	test_patch();
+	test_collinear();
+}
