@@ -122,6 +122,14 @@ static int object_bounds(const scene *s, const object *o, vec3 *lo, vec3 *hi)
 	}
 }
 
+/* The bin (0 .. BINS-1) of a centre at `offset` past the lowest centre, out of `extent`.
+ * The comparison keeps a NaN or out-of-range quotient from reaching the int conversion. */
+static int bin_of(real offset, real extent)
+{
+	real b = real_div(real_mul(offset, real_from_int(BINS)), extent);
+	return b >= REAL_C(0.0) ? (b < real_from_int(BINS) ? (int)b : BINS - 1) : 0;
+}
+
 static real half_area(vec3 lo, vec3 hi)
 {
 	vec3 d = vec_sub(hi, lo);
@@ -159,9 +167,7 @@ static int sah_split(scene *s, int first, int count, vec3 node_lo, vec3 node_hi,
 		}
 		for (i = 0; i < count; i++) {
 			int o = index[first + i];
-			int b = (int)(real_div(real_mul(vec_get(centre[o], axis) - lo, real_from_int(BINS)),
-					       extent));
-			b = b < 0 ? 0 : b >= BINS ? BINS - 1 : b;
+			int b = bin_of(vec_get(centre[o], axis) - lo, extent);
 			bin_count[b]++;
 			grow(&bin_lo[b], &bin_hi[b], object_lo[o]);
 			grow(&bin_lo[b], &bin_hi[b], object_hi[o]);
@@ -205,9 +211,7 @@ static int sah_split(scene *s, int first, int count, vec3 node_lo, vec3 node_hi,
 		int j = first + count - 1;
 		i = first;
 		while (i <= j) {
-			int b = (int)(real_div(real_mul(vec_get(centre[index[i]], best_axis) - lo,
-							real_from_int(BINS)),
-					       extent));
+			int b = bin_of(vec_get(centre[index[i]], best_axis) - lo, extent);
 			if (b <= best_plane) {
 				i++;
 			} else {

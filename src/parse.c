@@ -167,6 +167,9 @@ static int read_number(lexer *lx, const char *what, real *out)
 	if (!real_isfinite(*out))
 		return fail(lx, lx->tok_line, "expected %s, got '%s' (not a finite number)", what,
 			    lx->tok);
+	if (real_fabs(*out) > REAL_INPUT_LIMIT)
+		return fail(lx, lx->tok_line, "expected %s within +-1e12, got '%s' (out of range)",
+			    what, lx->tok);
 	return 1;
 }
 
@@ -432,8 +435,6 @@ static int parse_sphere(parser *p)
 	o->u.sphere.center = center;
 	o->u.sphere.radius = radius;
 	o->u.sphere.radius2 = real_mul(radius, radius);
-	if (!real_isfinite(o->u.sphere.radius2))
-		return fail(&p->lx, line, "sphere radius %s is too large", p->lx.tok);
 	p->s->object_count++;
 	return 1;
 }

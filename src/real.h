@@ -68,7 +68,10 @@ typedef long double real;
 #define real_min(a, b) ((a) < (b) ? (a) : (b))
 #define real_max(a, b) ((a) > (b) ? (a) : (b))
 
-/* Range budget (floating point): scene coordinates up to ~1e6 keep double hit points
- * accurate to 1e-10 relative; float is good to ~1e3 units (see docs/numerics in README). */
+/* Range budget (floating point): every number in a scene is at most REAL_INPUT_LIMIT in
+ * magnitude, so squares and dot products of coordinates (1e24 at most) and the bounding
+ * box arithmetic stay finite in every type. Double keeps hit points accurate to ~1e-10
+ * relative; float is good to ~1e3 units from the origin (numerics.md section 1). */
+#define REAL_INPUT_LIMIT REAL_C(1e12)
 
 #endif

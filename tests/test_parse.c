@@ -614,7 +614,10 @@ static void test_numbers(void)
 		     "got '" OVERFLOWING "' (not a finite number)");
 	EXPECT_ERROR(VIEW "s 0 0 -1e99999 1\n", 8, "got '-1e99999' (not a finite number)");
 	EXPECT_ERROR(VIEW "s 0 0 0 " TOO_LARGE_RADIUS "\n", 8,
-		     "sphere radius " TOO_LARGE_RADIUS " is too large");
+		     "expected a number (sphere radius) within +-1e12, got '" TOO_LARGE_RADIUS
+		     "' (out of range)");
+	EXPECT_OK(VIEW "s 1e12 0 0 1\n");
+	EXPECT_ERROR(VIEW "s -1.0000001e12 0 0 1\n", 8, "within +-1e12");
 	EXPECT_ERROR(VIEW "l 1 2\n", 9,
 		     "unexpected end of file (expected a number (light position))");
 	EXPECT_ERROR(VIEW "b 1 1\n", 9, "expected a number (background colour)");
