@@ -73,12 +73,14 @@ fuzz-merge: build/fuzz/fuzz-scene
 	build/fuzz/fuzz-scene -merge=1 -max_len=65536 tests/fuzz/corpus build/fuzz/new
 
 install: rt
-	mkdir -p $(DESTDIR)$(BINDIR)
+	mkdir -p $(DESTDIR)$(BINDIR) $(DESTDIR)$(MANDIR)
 	cp rt $(DESTDIR)$(BINDIR)/rt
 	chmod 755 $(DESTDIR)$(BINDIR)/rt
+	cp rt.1 $(DESTDIR)$(MANDIR)/rt.1
+	chmod 644 $(DESTDIR)$(MANDIR)/rt.1
 
 uninstall:
-	rm -f $(DESTDIR)$(BINDIR)/rt
+	rm -f $(DESTDIR)$(BINDIR)/rt $(DESTDIR)$(MANDIR)/rt.1
 
 clean:
 	rm -rf build rt

@@ -39,6 +39,9 @@
 #ifndef RT_MAX_MEDIA
 #define RT_MAX_MEDIA 8 /* nested transmitting objects a ray can be inside at once */
 #endif
+#ifndef RT_PNG_ARENA_BYTES
+#define RT_PNG_ARENA_BYTES (96L << 20) /* PNG encoder memory, bytes: 2048 x 2048 at most */
+#endif
 #ifndef RT_TOKEN_MAX
 #define RT_TOKEN_MAX 64 /* longest token in a scene file, in bytes */
 #endif

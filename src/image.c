@@ -5,6 +5,8 @@
  * See LICENSE for copyright and licence. */
 #include "image.h"
 
+#include "config.h"
+
 #include <stdio.h>
 
 /* Linear value at which each 8-bit code starts: decode((code - 0.5) / 255) for
@@ -70,4 +72,36 @@ int ppm_write_header(write_fn write, void *ctx, int width, int height)
 	char header[64];
 	int n = snprintf(header, sizeof header, "P6\n%d %d\n255\n", width, height);
 	return n > 0 && write(ctx, header, (size_t)n);
+}
+
+static int ppm_begin(sink *self, int width, int height)
+{
+	ppm_sink *p = (ppm_sink *)self;
+	p->width = width;
+	return ppm_write_header(self->write, self->ctx, width, height);
+}
+
+static int ppm_row(sink *self, const vec3 *colors)
+{
+	static unsigned char bytes[3 * RT_MAX_WIDTH];
+	ppm_sink *p = (ppm_sink *)self;
+	image_encode_row(colors, p->width, bytes);
+	return self->write(self->ctx, bytes, (size_t)p->width * 3);
+}
+
+static int ppm_end(sink *self)
+{
+	(void)self;
+	return 1;
+}
+
+void ppm_sink_init(ppm_sink *p, write_fn write, void *ctx)
+{
+	p->base.begin = ppm_begin;
+	p->base.row = ppm_row;
+	p->base.end = ppm_end;
+	p->base.write = write;
+	p->base.ctx = ctx;
+	p->base.error = NULL;
+	p->width = 0;
 }

@@ -6,10 +6,9 @@
 
 #include <stddef.h>
 
+#include "sink.h"
 #include "vec.h"
 
-/* Writes n bytes; returns 1 on success, 0 on failure. */
-typedef int (*write_fn)(void *ctx, const void *data, size_t n);
 
 /* Linear [0, 1] (clamped) to an 8-bit sRGB code value, rounded to nearest. */
 unsigned char image_srgb_byte(real linear);
@@ -23,5 +22,13 @@ void image_encode_row(const vec3 *colors, int count, unsigned char *bytes);
 
 /* Binary PPM: P6, maxval 255, then the rows. */
 int ppm_write_header(write_fn write, void *ctx, int width, int height);
+
+/* The PPM sink: header at begin, then each row as RGB bytes as soon as it is done. */
+typedef struct {
+	sink base;
+	int width;
+} ppm_sink;
+
+void ppm_sink_init(ppm_sink *p, write_fn write, void *ctx);
 
 #endif

@@ -1,4 +1,4 @@
-/* main.c - the command line: options, scene in, image out, statistics.
+/* main.c - the command line: options, scene in, image or preview out, statistics.
  * See LICENSE for copyright and licence. */
 #define _POSIX_C_SOURCE 200809L
 
@@ -6,27 +6,35 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <time.h>
-#include <unistd.h>
 
 #include "bvh.h"
 #include "camera.h"
 #include "diag.h"
+#include "output.h"
 #include "parse.h"
+#include "png.h"
+#include "preview.h"
 #include "render.h"
+#include "term.h"
 #include "trace.h"
 
-#define RT_VERSION "0.1.0"
+#define RT_VERSION "0.2.0"
 
 static const char usage_text[] =
 	"Usage: rt [OPTION]... SCENE\n"
 	"Render SCENE (NFF with rt's extensions) by recursive ray tracing.\n"
-	"The image goes to standard output as binary PPM unless -o is given.\n"
+	"The image goes to standard output as binary PPM; on a terminal, rt shows a\n"
+	"preview instead.\n"
 	"\n"
-	"  -o FILE      write the image to FILE (replaced only when the render succeeds)\n"
+	"  -o FILE      write to FILE, in the format its name ends with: .ppm, .png,\n"
+	"               .txt (ASCII preview) or .ans (ANSI colour preview); FILE is\n"
+	"               replaced only when the render succeeds\n"
 	"  -s WxH       image size in pixels, overriding the scene's resolution\n"
 	"  -d N         ray tree depth, 1 to " RT_STRINGIFY(RT_MAX_DEPTH) " (eye ray = 1)\n"
+	"  --ascii      ASCII-art preview (7-bit, no escape sequences)\n"
+	"  --ansi       colour preview with half-blocks (24-bit if COLORTERM says so,\n"
+	"               else 256 colours; ASCII when NO_COLOR is set)\n"
+	"  --cols N     preview width in characters (default: the terminal's, else 80)\n"
 	"  --rows Y0:Y1 render only rows Y0 to Y1-1, as a PPM of that band (for splitting\n"
 	"               a render across processes: see tools/render-parallel)\n"
 	"  --spd        SPD testing procedure: corner rays, depth 5, no weight cutoff\n"
@@ -36,11 +44,15 @@ static const char usage_text[] =
 	"\n"
 	"Exit status: 0 on success, 1 on a scene or output error, 2 on a usage error.\n";
 
+enum format { FORMAT_DEFAULT, FORMAT_PPM, FORMAT_PNG, FORMAT_ASCII, FORMAT_ANSI };
+
 typedef struct {
 	const char *scene_path;
 	const char *output_path;
+	enum format format;
 	int width, height; /* 0: the scene's */
 	int depth;         /* 0: the scene's */
+	int columns;       /* preview width, 0: the terminal's */
 	int row_first, row_end; /* --rows: [first, end); end 0 for all rows */
 	int spd;
 	int stats;
@@ -48,6 +60,7 @@ typedef struct {
 
 /* Scene storage is large and lives for the whole run. */
 static scene the_scene;
+static tracer the_tracer;
 
 static int usage_error(const char *fmt, const char *arg)
 {
@@ -57,8 +70,9 @@ static int usage_error(const char *fmt, const char *arg)
 	return 2;
 }
 
-/* Parses a positive decimal integer that fills the whole string up to `stop`. */
-static int parse_size(const char *text, char stop, long max, int *out, const char **rest)
+/* Parses a decimal integer in [min, max] that ends at `stop`; *rest is after it. */
+static int parse_int(const char *text, char stop, long min, long max, int *out,
+		     const char **rest)
 {
 	char *end;
 	long value;
@@ -66,7 +80,7 @@ static int parse_size(const char *text, char stop, long max, int *out, const cha
 		return 0;
 	errno = 0;
 	value = strtol(text, &end, 10);
-	if (errno || *end != stop || value < 1 || value > max)
+	if (errno || *end != stop || value < min || value > max)
 		return 0;
 	*out = (int)value;
 	if (rest)
@@ -74,32 +88,40 @@ static int parse_size(const char *text, char stop, long max, int *out, const cha
 	return 1;
 }
 
-/* Parses Y0:Y1 with 0 <= Y0 < Y1 <= RT_MAX_HEIGHT. */
-static int parse_rows(const char *text, int *first, int *end)
+/* The output format a file name asks for, by its ending. */
+static enum format format_of(const char *path)
 {
-	char *stop;
-	long a, b;
-	if (*text < '0' || *text > '9')
-		return 0;
-	errno = 0;
-	a = strtol(text, &stop, 10);
-	if (errno || *stop != ':' || stop[1] < '0' || stop[1] > '9')
-		return 0;
-	b = strtol(stop + 1, &stop, 10);
-	if (errno || *stop != '\0' || a < 0 || b <= a || b > RT_MAX_HEIGHT)
-		return 0;
-	*first = (int)a;
-	*end = (int)b;
-	return 1;
+	static const struct {
+		const char *ending;
+		enum format format;
+	} endings[] = {{".ppm", FORMAT_PPM}, {".png", FORMAT_PNG}, {".txt", FORMAT_ASCII},
+		       {".ans", FORMAT_ANSI}};
+	size_t n = strlen(path), i;
+	for (i = 0; i < sizeof endings / sizeof endings[0]; i++) {
+		size_t k = strlen(endings[i].ending);
+		if (n > k && strcmp(path + n - k, endings[i].ending) == 0)
+			return endings[i].format;
+	}
+	return FORMAT_DEFAULT;
+}
+
+/* Sets the format, refusing two different ones. */
+static int choose_format(options *o, enum format f, const char *why)
+{
+	if (o->format != FORMAT_DEFAULT && o->format != f)
+		return usage_error("conflicting output formats ('%s')", why);
+	o->format = f;
+	return -1;
 }
 
 /* Returns -1 to go on, else the exit status. */
 static int parse_options(int argc, char **argv, options *o)
 {
-	int i;
+	int i, status;
 	memset(o, 0, sizeof *o);
 	for (i = 1; i < argc; i++) {
 		const char *a = argv[i];
+		const char *value = NULL, *rest;
 		if (strcmp(a, "--help") == 0) {
 			fputs(usage_text, stdout);
 			return 0;
@@ -110,26 +132,46 @@ static int parse_options(int argc, char **argv, options *o)
 			o->stats = 1;
 		} else if (strcmp(a, "--spd") == 0) {
 			o->spd = 1;
-		} else if (strcmp(a, "--rows") == 0) {
-			const char *value = i + 1 < argc ? argv[++i] : NULL;
+		} else if (strcmp(a, "--ascii") == 0 || strcmp(a, "--ansi") == 0) {
+			status = choose_format(o, strcmp(a, "--ascii") == 0 ? FORMAT_ASCII : FORMAT_ANSI, a);
+			if (status >= 0)
+				return status;
+		} else if (strcmp(a, "-o") == 0 || strcmp(a, "-s") == 0 || strcmp(a, "-d") == 0 ||
+			   strcmp(a, "--rows") == 0 || strcmp(a, "--cols") == 0) {
+			value = i + 1 < argc ? argv[++i] : NULL;
 			if (!value)
 				return usage_error("option '%s' needs a value", a);
-			if (!parse_rows(value, &o->row_first, &o->row_end))
-				return usage_error("bad rows '%s' (expected Y0:Y1 with 0 <= Y0 < Y1)", value);
-		} else if (strcmp(a, "-o") == 0 || strcmp(a, "-s") == 0 || strcmp(a, "-d") == 0) {
-			const char *value = i + 1 < argc ? argv[++i] : NULL, *rest;
-			if (!value)
-				return usage_error("option '%s' needs a value", a);
-			if (a[1] == 'o') {
-				o->output_path = value;
-			} else if (a[1] == 's') {
-				if (!parse_size(value, 'x', RT_MAX_WIDTH, &o->width, &rest) ||
-				    !parse_size(rest, '\0', RT_MAX_HEIGHT, &o->height, NULL))
-					return usage_error("bad size '%s' (expected WxH, e.g. 320x240, "
-							   "at most " RT_STRINGIFY(RT_MAX_WIDTH) "x" RT_STRINGIFY(RT_MAX_HEIGHT) ")",
+			if (strcmp(a, "-o") == 0) {
+				enum format f = format_of(value);
+				if (f == FORMAT_DEFAULT)
+					return usage_error("cannot tell the format of '%s' (name it "
+							   ".ppm, .png, .txt or .ans)",
 							   value);
-			} else if (!parse_size(value, '\0', RT_MAX_DEPTH, &o->depth, NULL)) {
-				return usage_error("bad depth '%s' (expected 1 to " RT_STRINGIFY(RT_MAX_DEPTH) ")",
+				o->output_path = value;
+				status = choose_format(o, f, value);
+				if (status >= 0)
+					return status;
+			} else if (strcmp(a, "-s") == 0) {
+				if (!parse_int(value, 'x', 1, RT_MAX_WIDTH, &o->width, &rest) ||
+				    !parse_int(rest, '\0', 1, RT_MAX_HEIGHT, &o->height, NULL))
+					return usage_error("bad size '%s' (expected WxH, e.g. 320x240, "
+							   "at most " RT_STRINGIFY(RT_MAX_WIDTH) "x" RT_STRINGIFY(
+								   RT_MAX_HEIGHT) ")",
+							   value);
+			} else if (strcmp(a, "-d") == 0) {
+				if (!parse_int(value, '\0', 1, RT_MAX_DEPTH, &o->depth, NULL))
+					return usage_error("bad depth '%s' (expected 1 to " RT_STRINGIFY(
+								   RT_MAX_DEPTH) ")",
+							   value);
+			} else if (strcmp(a, "--cols") == 0) {
+				if (!parse_int(value, '\0', 1, RT_MAX_WIDTH, &o->columns, NULL))
+					return usage_error("bad column count '%s' (expected 1 to " RT_STRINGIFY(
+								   RT_MAX_WIDTH) ")",
+							   value);
+			} else if (!parse_int(value, ':', 0, RT_MAX_HEIGHT - 1, &o->row_first, &rest) ||
+				   !parse_int(rest, '\0', o->row_first + 1, RT_MAX_HEIGHT, &o->row_end,
+					      NULL)) {
+				return usage_error("bad rows '%s' (expected Y0:Y1 with 0 <= Y0 < Y1)",
 						   value);
 			}
 		} else if (a[0] == '-' && a[1] != '\0') {
@@ -142,90 +184,12 @@ static int parse_options(int argc, char **argv, options *o)
 	}
 	if (!o->scene_path)
 		return usage_error("no scene file given%s", "");
+	/* On a terminal, binary PPM would only garble it: show a preview instead. */
+	if (o->format == FORMAT_DEFAULT)
+		o->format = !o->output_path && term_is_tty(1) ? FORMAT_ANSI : FORMAT_PPM;
+	if (o->row_end && o->format != FORMAT_PPM)
+		return usage_error("--rows writes PPM bands only%s", "");
 	return -1;
-}
-
-static double now_seconds(void)
-{
-	struct timespec ts;
-	clock_gettime(CLOCK_MONOTONIC, &ts);
-	return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
-}
-
-static int write_stdio(void *ctx, const void *data, size_t n)
-{
-	return fwrite(data, 1, n, (FILE *)ctx) == n;
-}
-
-/* The output: stdout, or a temporary file beside the target renamed over it at the end,
- * so a failed run never leaves a half-written image or clobbers an existing one. */
-typedef struct {
-	FILE *file;
-	char temp_path[4096];
-	int is_temp;
-} output;
-
-/* mkstemp creates the file private (0600); the image should get the mode a plain fopen
- * gives: the replaced file's own, or 0666 less the umask for a new one. */
-static mode_t output_mode(const char *path)
-{
-	struct stat st;
-	mode_t mask;
-	if (stat(path, &st) == 0 && S_ISREG(st.st_mode))
-		return st.st_mode & 07777;
-	mask = umask(0);
-	umask(mask);
-	return 0666 & ~mask;
-}
-
-static int output_open(output *out, const char *path)
-{
-	int fd;
-	out->is_temp = 0;
-	if (!path) {
-		out->file = stdout;
-		return 1;
-	}
-	if (snprintf(out->temp_path, sizeof out->temp_path, "%s.tmpXXXXXX", path) >=
-	    (int)sizeof out->temp_path) {
-		diag_error(path, 0, "output path too long");
-		return 0;
-	}
-	fd = mkstemp(out->temp_path);
-	if (fd >= 0)
-		(void)fchmod(fd, output_mode(path));
-	if (fd < 0 || !(out->file = fdopen(fd, "wb"))) {
-		diag_error(path, 0, "cannot create a temporary file beside it: %s", strerror(errno));
-		if (fd >= 0) {
-			close(fd);
-			remove(out->temp_path);
-		}
-		return 0;
-	}
-	out->is_temp = 1;
-	return 1;
-}
-
-/* Finishes the output: flushes, and renames the temporary file into place when ok. */
-static int output_close(output *out, const char *path, int ok)
-{
-	int flushed = fflush(out->file) == 0 && !ferror(out->file);
-	if (ok && !flushed)
-		diag_error(NULL, 0, "write error: %s", strerror(errno));
-	ok = ok && flushed;
-	if (!out->is_temp)
-		return ok;
-	if (fclose(out->file) != 0 && ok) {
-		diag_error(path, 0, "write error: %s", strerror(errno));
-		ok = 0;
-	}
-	if (ok && rename(out->temp_path, path) != 0) {
-		diag_error(path, 0, "cannot replace: %s", strerror(errno));
-		ok = 0;
-	}
-	if (!ok)
-		remove(out->temp_path);
-	return ok;
 }
 
 static void print_stats(const trace_stats *st, double parse_seconds, double seconds)
@@ -244,46 +208,87 @@ static void print_stats(const trace_stats *st, double parse_seconds, double seco
 
 int main(int argc, char **argv)
 {
+	static union {
+		ppm_sink ppm;
+		png_sink png;
+		preview_sink preview;
+	} sinks;
 	options opt;
 	camera cam;
 	output out;
-	static tracer tr;
+	progress_bar bar;
+	sink *target;
 	int status = parse_options(argc, argv, &opt), width, height, depth, ok;
 	double start, parsed;
-	real cutoff;
 
 	if (status >= 0)
 		return status;
-	start = now_seconds();
+	start = term_now();
 	if (!parse_scene_file(&the_scene, opt.scene_path))
 		return 1;
 #if RT_USE_BVH
 	bvh_build(&the_scene);
 #endif
-	parsed = now_seconds();
+	parsed = term_now();
 	width = opt.width ? opt.width : the_scene.camera.width;
 	height = opt.height ? opt.height : the_scene.camera.height;
-	depth = opt.spd ? 5 : opt.depth ? opt.depth : the_scene.depth;
-	cutoff = opt.spd ? REAL_C(0.0) : the_scene.cutoff;
-	if (!camera_init(&cam, &the_scene.camera, width, height)) {
-		diag_error(opt.scene_path, 0, "degenerate view");
-		return 1;
+	if (opt.format == FORMAT_ASCII || opt.format == FORMAT_ANSI) {
+		/* A preview traces its own, smaller image: one ray per half cell. */
+		if (opt.format == FORMAT_ANSI)
+			opt.format = term_color_mode() == PREVIEW_ASCII ? FORMAT_ASCII : FORMAT_ANSI;
+		preview_size(opt.columns ? opt.columns : term_columns(), width, height, &width,
+			     &height);
 	}
 	if (opt.row_end > height) {
 		diag_error(NULL, 0, "--rows %d:%d is outside the image's %d rows", opt.row_first,
 			   opt.row_end, height);
 		return 2;
 	}
-	tracer_init(&tr, &the_scene, depth, cutoff);
+	if (opt.format == FORMAT_PNG && !png_fits(width, height)) {
+		diag_error(opt.output_path, 0,
+			   "%dx%d is too large for PNG output (the encoder's fixed memory, "
+			   "RT_PNG_ARENA_BYTES in src/config.h, holds about 2048x2048); write .ppm",
+			   width, height);
+		return 1;
+	}
+	if (!camera_init(&cam, &the_scene.camera, width, height)) {
+		diag_error(opt.scene_path, 0, "degenerate view");
+		return 1;
+	}
+	depth = opt.spd ? 5 : opt.depth ? opt.depth : the_scene.depth;
+	tracer_init(&the_tracer, &the_scene, depth, opt.spd ? REAL_C(0.0) : the_scene.cutoff);
 	if (!output_open(&out, opt.output_path))
 		return 1;
-	ok = render_ppm(&tr, &cam, opt.spd ? SAMPLE_CORNERS : SAMPLE_CENTRE, opt.row_first,
-			opt.row_end ? opt.row_end : height, write_stdio, out.file);
-	if (!ok)
+	switch (opt.format) {
+	case FORMAT_PNG:
+		png_sink_init(&sinks.png, output_write, &out);
+		target = &sinks.png.base;
+		break;
+	case FORMAT_ASCII:
+	case FORMAT_ANSI:
+		preview_sink_init(&sinks.preview,
+				  opt.format == FORMAT_ASCII ? PREVIEW_ASCII : term_color_mode(),
+				  output_write, &out);
+		target = &sinks.preview.base;
+		break;
+	default:
+		ppm_sink_init(&sinks.ppm, output_write, &out);
+		target = &sinks.ppm.base;
+	}
+	/* The bar would garble a preview drawn on the same terminal. */
+	progress_start(&bar, term_is_tty(2) && !(opt.output_path == NULL && term_is_tty(1)),
+		       &the_tracer.stats);
+	ok = render_image(&the_tracer, &cam, opt.spd ? SAMPLE_CORNERS : SAMPLE_CENTRE,
+			  opt.row_first, opt.row_end ? opt.row_end : height, target, progress_update,
+			  &bar);
+	progress_finish(&bar);
+	if (!ok && target->error)
+		diag_error(opt.output_path, 0, "%s", target->error);
+	else if (!ok)
 		diag_error(NULL, 0, "write error: %s", strerror(errno));
-	if (!output_close(&out, opt.output_path, ok))
+	if (!output_close(&out, ok))
 		return 1;
 	if (opt.stats)
-		print_stats(&tr.stats, parsed - start, now_seconds() - parsed);
+		print_stats(&the_tracer.stats, parsed - start, term_now() - parsed);
 	return 0;
 }

@@ -1,14 +1,11 @@
-/* render.c - walks the image row by row and hands each finished row to the writer:
+/* render.c - walks the image row by row and hands each finished row to the sink:
  * single pass, no frame buffer, so memory does not grow with the image height.
  * See LICENSE for copyright and licence. */
 #include "render.h"
 
-RT_STATIC_ASSERT(row_fits_int, RT_MAX_WIDTH < 1000000);
-
 /* Colours of one row of pixel centres, or two rows of pixel corners. */
 static vec3 row_colors[RT_MAX_WIDTH + 1];
 static vec3 corner_rows[2][RT_MAX_WIDTH + 1];
-static unsigned char row_bytes[3 * RT_MAX_WIDTH];
 
 /* Eye rays through the corners on image line y (in pixels from the top). */
 static void trace_corner_row(tracer *t, const camera *c, int y, vec3 *out)
@@ -20,11 +17,11 @@ static void trace_corner_row(tracer *t, const camera *c, int y, vec3 *out)
 	}
 }
 
-int render_ppm(tracer *t, const camera *c, enum render_sampling sampling, int y0, int y1,
-	       write_fn write, void *ctx)
+int render_image(tracer *t, const camera *c, enum render_sampling sampling, int y0, int y1,
+		 sink *out, progress_fn progress, void *progress_ctx)
 {
 	int x, y, top = 0;
-	if (!ppm_write_header(write, ctx, c->width, y1 - y0))
+	if (!out->begin(out, c->width, y1 - y0))
 		return 0;
 	if (sampling == SAMPLE_CORNERS)
 		trace_corner_row(t, c, y0, corner_rows[top]);
@@ -46,9 +43,10 @@ int render_ppm(tracer *t, const camera *c, enum render_sampling sampling, int y0
 				row_colors[x] = tracer_eye(t, &r, NULL);
 			}
 		}
-		image_encode_row(row_colors, c->width, row_bytes);
-		if (!write(ctx, row_bytes, (size_t)c->width * 3))
+		if (!out->row(out, row_colors))
 			return 0;
+		if (progress)
+			progress(progress_ctx, y + 1 - y0, y1 - y0);
 	}
-	return 1;
+	return out->end(out);
 }

@@ -378,6 +378,59 @@ expect_status "no lights" 0
 expect_pixel "no lights" "$tmp/out" 8 6 "0 0 0"
 expect_pixel "no lights" "$tmp/out" 0 0 "51 102 153"
 
+# ---- previews and image formats -------------------------------------------------------
+run --ascii --cols 60 scenes/mirror-spheres.nff
+expect_status "--ascii" 0
+if awk 'length($0) > 60 { bad = 1 } END { exit bad }' "$tmp/out"; then ok; else
+	bad "--ascii --cols 60: a line is longer than 60"
+fi
+if LC_ALL=C grep -q '[^ -~]' "$tmp/out"; then bad "--ascii: a byte outside printable ASCII"; else ok; fi
+# 320x240 at 60 columns: 45 square pixels tall, so 23 lines of two pixels each.
+if [ "$(wc -l <"$tmp/out" | tr -d ' ')" -eq 23 ]; then ok; else
+	bad "--ascii --cols 60: $(wc -l <"$tmp/out") lines, expected 23"
+fi
+if cmp -s "$tmp/out" tests/golden/mirror-spheres-40.txt; then ok; else
+	"$RT" --ascii --cols 40 scenes/mirror-spheres.nff >"$tmp/out"
+	cmp -s "$tmp/out" tests/golden/mirror-spheres-40.txt && ok ||
+		bad "--ascii --cols 40: differs from tests/golden/mirror-spheres-40.txt"
+fi
+esc=$(printf '\033')
+COLORTERM=truecolor NO_COLOR= run --ansi --cols 30 scenes/mirror-spheres.nff
+if grep -q "${esc}\[38;2;" "$tmp/out" && grep -q "${esc}\[48;2;" "$tmp/out"; then ok; else
+	bad "--ansi with COLORTERM=truecolor: no 24-bit colours"
+fi
+if awk -v e="$esc" '$0 !~ (e "\\[0m$") { bad = 1 } END { exit bad }' "$tmp/out"; then ok; else
+	bad "--ansi: a line does not end with a reset"
+fi
+COLORTERM= NO_COLOR= run --ansi --cols 30 scenes/mirror-spheres.nff
+if grep -q "${esc}\[38;5;" "$tmp/out" && ! grep -q "${esc}\[38;2;" "$tmp/out"; then ok; else
+	bad "--ansi without COLORTERM: expected 256 colours only"
+fi
+NO_COLOR=1 COLORTERM=truecolor run --ansi --cols 30 scenes/mirror-spheres.nff
+if grep -q "$esc" "$tmp/out"; then bad "NO_COLOR: escape sequences written"; else ok; fi
+run -o "$tmp/image.png" scenes/glass.nff
+expect_status "-o .png" 0
+"$RT" scenes/glass.nff >"$tmp/image.ppm"
+if python3 tests/pngcheck.py "$tmp/image.png" "$tmp/image.ppm"; then ok; else
+	bad "-o .png: decoded pixels differ from the PPM"
+fi
+run -o "$tmp/preview.txt" --cols 30 scenes/glass.nff
+expect_status "-o .txt" 0
+if grep -q "$esc" "$tmp/preview.txt" || [ ! -s "$tmp/preview.txt" ]; then bad "-o .txt: not plain text"; else ok; fi
+COLORTERM=truecolor run -o "$tmp/preview.ans" --cols 30 scenes/glass.nff
+if grep -q "${esc}\[38;2;" "$tmp/preview.ans"; then ok; else bad "-o .ans: no colour escapes"; fi
+run -o "$tmp/image.xyz" scenes/glass.nff
+expect_status "-o with an unknown extension" 2
+run -o "$tmp/image.png" --ascii scenes/glass.nff
+expect_status "-o .png with --ascii" 2
+run --ascii --rows 0:4 scenes/glass.nff
+expect_status "--rows with a preview" 2
+printf 'keep' >"$tmp/big.png"
+run -s 8000x8000 -o "$tmp/big.png" scenes/glass.nff
+expect_status "PNG too large" 1
+expect_err "PNG too large" "too large for PNG"
+if [ "$(cat "$tmp/big.png")" = keep ]; then ok; else bad "PNG too large: existing file changed"; fi
+
 # ---- bands -----------------------------------------------------------------------
 # Bands rendered by separate runs and joined (one header, then each band's pixels) are
 # byte-identical to the whole image, with centre and with corner (--spd) sampling.

@@ -52,7 +52,7 @@ int main(int argc, char **argv)
 	} suites[] = {
 		{"sphere", suite_sphere},         {"hedron", suite_hedron}, {"polygon", suite_polygon},
 		{"cone", suite_cone},             {"optics", suite_optics}, {"properties", suite_properties},
-		{"parse", suite_parse},           {"image", suite_image},
+		{"parse", suite_parse},           {"image", suite_image},   {"output", suite_output},
 	};
 	size_t i;
 	for (i = 0; i < sizeof suites / sizeof suites[0]; i++)

@@ -40,5 +40,6 @@ void suite_optics(void);
 void suite_properties(void);
 void suite_parse(void);
 void suite_image(void);
+void suite_output(void);
 
 #endif

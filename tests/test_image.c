@@ -157,11 +157,11 @@ typedef struct {
 	unsigned char data[64];
 	size_t used;
 	int calls;
-} sink;
+} byte_buffer;
 
 static int write_sink(void *ctx, const void *data, size_t n)
 {
-	sink *s = ctx;
+	byte_buffer *s = ctx;
 	s->calls++;
 	if (n > sizeof s->data - s->used)
 		return 0;
@@ -180,7 +180,7 @@ static int write_fail(void *ctx, const void *data, size_t n)
 
 static void test_ppm_header(void)
 {
-	sink s;
+	byte_buffer s;
 	int calls = 0;
 	memset(&s, 0, sizeof s);
 	CHECK_INT(ppm_write_header(write_sink, &s, 4, 3), 1);

@@ -7,7 +7,9 @@
 #include "bvh.h"
 #include "camera.h"
 #include "diag.h"
+#include "image.h"
 #include "parse.h"
+#include "preview.h"
 #include "render.h"
 #include "trace.h"
 
@@ -53,10 +55,18 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 #if RT_USE_BVH
 		bvh_build(&fuzz_scene);
 #endif
-		/* A tiny image: every code path of the tracer, a few dozen eye rays. */
+		/* A tiny image: every code path of the tracer, a few dozen eye rays; then the
+		 * same through the ANSI preview. */
 		if (camera_init(&cam, &fuzz_scene.camera, 6, 4)) {
+			ppm_sink ppm;
+			preview_sink ansi;
 			tracer_init(&fuzz_tracer, &fuzz_scene, fuzz_scene.depth, fuzz_scene.cutoff);
-			render_ppm(&fuzz_tracer, &cam, SAMPLE_CORNERS, 0, cam.height, discard, NULL);
+			ppm_sink_init(&ppm, discard, NULL);
+			render_image(&fuzz_tracer, &cam, SAMPLE_CORNERS, 0, cam.height, &ppm.base,
+				     NULL, NULL);
+			preview_sink_init(&ansi, PREVIEW_ANSI_256, discard, NULL);
+			render_image(&fuzz_tracer, &cam, SAMPLE_CENTRE, 0, cam.height, &ansi.base,
+				     NULL, NULL);
 		}
 	}
 	diag_set_sink(NULL, NULL);

@@ -1,0 +1,146 @@
+/* preview.c - ASCII and ANSI previews, streamed a text line at a time.
+ * ASCII picks one of ten characters by the cell's lightness (taken from the sRGB-encoded
+ * value, which is close to how light a grey looks). ANSI draws U+2580 UPPER HALF BLOCK
+ * with the upper pixel as foreground and the lower one as background, and sends a colour
+ * only when it changes. See LICENSE for copyright and licence. */
+#include "preview.h"
+
+#include <stdio.h>
+
+#include "image.h"
+
+const char preview_ramp[] = " .:-=+*#%@";
+#define RAMP_LENGTH (int)(sizeof preview_ramp - 1)
+
+/* One text line: at most ~40 bytes of escapes and glyph per cell, plus the reset. */
+static char line[44 * RT_MAX_WIDTH + 16];
+
+void preview_size(int columns, int scene_width, int scene_height, int *width, int *height)
+{
+	/* Square pixels, two to a cell: the pixel rows the aspect asks for, rounded to the
+	 * nearest, then up to whole cells. */
+	long pixels = ((long)columns * scene_height + scene_width / 2) / scene_width;
+	long cells = (pixels + 1) / 2;
+	*width = columns;
+	*height = (int)(cells < 1 ? 2 : 2 * (cells > RT_MAX_HEIGHT / 2 ? RT_MAX_HEIGHT / 2 : cells));
+}
+
+/* BT.709 luma of sRGB bytes, 0..255. */
+static int luma(const unsigned char *rgb)
+{
+	return (54 * rgb[0] + 183 * rgb[1] + 19 * rgb[2]) / 256;
+}
+
+/* Nearest colour of xterm's 256-colour palette: the 6x6x6 cube or the 24 greys. */
+static int palette_index(const unsigned char *rgb)
+{
+	static const int level[6] = {0, 95, 135, 175, 215, 255};
+	int cube[3], i, best_grey, grey_value, cube_distance = 0, grey_distance = 0;
+	for (i = 0; i < 3; i++) {
+		int c = 0;
+		while (c < 5 && rgb[i] > (level[c] + level[c + 1]) / 2)
+			c++;
+		cube[i] = c;
+		cube_distance += (rgb[i] - level[c]) * (rgb[i] - level[c]);
+	}
+	/* Greys 232..255 are 8, 18, ..., 238. */
+	best_grey = (luma(rgb) - 3) / 10;
+	best_grey = best_grey < 0 ? 0 : best_grey > 23 ? 23 : best_grey;
+	grey_value = 8 + 10 * best_grey;
+	for (i = 0; i < 3; i++)
+		grey_distance += (rgb[i] - grey_value) * (rgb[i] - grey_value);
+	if (grey_distance < cube_distance)
+		return 232 + best_grey;
+	return 16 + 36 * cube[0] + 6 * cube[1] + cube[2];
+}
+
+/* Appends the escape that sets the foreground (layer 38) or background (48) colour. */
+static int set_color(char *out, int layer, enum preview_mode mode, const unsigned char *rgb)
+{
+	if (mode == PREVIEW_ANSI_24)
+		return sprintf(out, "\033[%d;2;%d;%d;%dm", layer, rgb[0], rgb[1], rgb[2]);
+	return sprintf(out, "\033[%d;5;%dm", layer, palette_index(rgb));
+}
+
+/* Would the terminal show a different colour? (In 256 colours, many pixels share one.) */
+static int changed(enum preview_mode mode, const unsigned char *a, const unsigned char *b)
+{
+	if (mode == PREVIEW_ANSI_256)
+		return palette_index(a) != palette_index(b);
+	return a[0] != b[0] || a[1] != b[1] || a[2] != b[2];
+}
+
+/* Writes the text line for an upper and a lower pixel row. */
+static int emit_line(preview_sink *p, const unsigned char *upper, const unsigned char *lower)
+{
+	int x, n = 0;
+	const unsigned char *fg = NULL, *bg = NULL; /* colours in effect on this line */
+	for (x = 0; x < p->width; x++) {
+		const unsigned char *u = upper + 3 * x, *l = lower + 3 * x;
+		if (p->mode == PREVIEW_ASCII) {
+			int lightness = (luma(u) + luma(l)) / 2;
+			line[n++] = preview_ramp[lightness * RAMP_LENGTH / 256];
+			continue;
+		}
+		if (!fg || changed(p->mode, fg, u))
+			n += set_color(line + n, 38, p->mode, u);
+		if (!bg || changed(p->mode, bg, l))
+			n += set_color(line + n, 48, p->mode, l);
+		fg = u;
+		bg = l;
+		line[n++] = (char)0xE2; /* U+2580 in UTF-8 */
+		line[n++] = (char)0x96;
+		line[n++] = (char)0x80;
+	}
+	if (p->mode != PREVIEW_ASCII)
+		n += sprintf(line + n, "\033[0m");
+	line[n++] = '\n';
+	return p->base.write(p->base.ctx, line, (size_t)n);
+}
+
+static int preview_begin(sink *self, int width, int height)
+{
+	preview_sink *p = (preview_sink *)self;
+	(void)height;
+	p->width = width;
+	p->have_upper = 0;
+	return width >= 1 && width <= RT_MAX_WIDTH;
+}
+
+static int preview_row(sink *self, const vec3 *colors)
+{
+	static unsigned char lower[3 * RT_MAX_WIDTH];
+	preview_sink *p = (preview_sink *)self;
+	if (!p->have_upper) {
+		image_encode_row(colors, p->width, p->upper);
+		p->have_upper = 1;
+		return 1;
+	}
+	image_encode_row(colors, p->width, lower);
+	p->have_upper = 0;
+	return emit_line(p, p->upper, lower);
+}
+
+static int preview_end(sink *self)
+{
+	preview_sink *p = (preview_sink *)self;
+	/* An odd last row fills its cell alone. */
+	if (p->have_upper) {
+		p->have_upper = 0;
+		return emit_line(p, p->upper, p->upper);
+	}
+	return 1;
+}
+
+void preview_sink_init(preview_sink *p, enum preview_mode mode, write_fn write, void *ctx)
+{
+	p->base.begin = preview_begin;
+	p->base.row = preview_row;
+	p->base.end = preview_end;
+	p->base.write = write;
+	p->base.ctx = ctx;
+	p->base.error = NULL;
+	p->mode = mode;
+	p->width = 0;
+	p->have_upper = 0;
+}

@@ -1,0 +1,90 @@
+/* term.c - terminal queries (isatty, TIOCGWINSZ, colour variables) and the progress bar.
+ * See LICENSE for copyright and licence. */
+#define _POSIX_C_SOURCE 200809L
+#define _DEFAULT_SOURCE /* TIOCGWINSZ */
+
+#include "term.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/ioctl.h>
+#include <time.h>
+#include <unistd.h>
+
+int term_is_tty(int fd)
+{
+	return isatty(fd);
+}
+
+int term_columns(void)
+{
+	struct winsize ws;
+	const char *columns = getenv("COLUMNS");
+	if (isatty(1) && ioctl(1, TIOCGWINSZ, &ws) == 0 && ws.ws_col > 0)
+		return ws.ws_col;
+	if (columns && atoi(columns) > 0)
+		return atoi(columns);
+	return 80;
+}
+
+enum preview_mode term_color_mode(void)
+{
+	const char *no_color = getenv("NO_COLOR"), *term = getenv("TERM");
+	const char *colorterm = getenv("COLORTERM");
+	if ((no_color && *no_color) || (term && strcmp(term, "dumb") == 0))
+		return PREVIEW_ASCII;
+	if (colorterm && (strcmp(colorterm, "truecolor") == 0 || strcmp(colorterm, "24bit") == 0))
+		return PREVIEW_ANSI_24;
+	return PREVIEW_ANSI_256;
+}
+
+double term_now(void)
+{
+	struct timespec ts;
+	clock_gettime(CLOCK_MONOTONIC, &ts);
+	return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
+}
+
+void progress_start(progress_bar *p, int enabled, const trace_stats *stats)
+{
+	p->enabled = enabled;
+	p->start = term_now();
+	p->last_draw = 0.0;
+	p->stats = stats;
+	p->drawn = 0;
+}
+
+void progress_update(void *ctx, int done, int total)
+{
+	progress_bar *p = ctx;
+	const trace_stats *st = p->stats;
+	double now, elapsed, left, rays;
+	int filled, i;
+	char bar[32];
+	if (!p->enabled)
+		return;
+	now = term_now();
+	elapsed = now - p->start;
+	left = elapsed / done * (total - done);
+	/* Quiet for quick renders; a few redraws a second for the rest. */
+	if (elapsed < 0.5 || elapsed + left < 1.0 || now - p->last_draw < 0.1)
+		return;
+	p->last_draw = now;
+	filled = (int)((long)done * 30 / total);
+	for (i = 0; i < 30; i++)
+		bar[i] = i < filled ? '#' : '.';
+	bar[30] = '\0';
+	rays = (double)(st->eye_rays + st->shadow_rays + st->reflect_rays + st->refract_rays);
+	fprintf(stderr, "\r[%s] %d/%d rows  %.2f Mrays/s  %.0f s left \033[K", bar, done, total,
+		rays / elapsed * 1e-6, left + 0.5);
+	fflush(stderr);
+	p->drawn = 1;
+}
+
+void progress_finish(progress_bar *p)
+{
+	if (p->drawn)
+		fprintf(stderr, "\r\033[K");
+	p->drawn = 0;
+}

@@ -1,0 +1,35 @@
+/* term.h - what rt asks of the terminal: is it one, how wide, which colours, and the
+ * progress bar it draws on standard error. See LICENSE for copyright and licence. */
+#ifndef RT_TERM_H
+#define RT_TERM_H
+
+#include "preview.h"
+#include "trace.h"
+
+/* Is file descriptor fd a terminal? */
+int term_is_tty(int fd);
+
+/* Columns for a preview on standard output: its terminal's width, else $COLUMNS, else 80. */
+int term_columns(void);
+
+/* The preview a colour request gets here: 24-bit when COLORTERM says truecolor or 24bit,
+ * else 256 colours; plain ASCII when NO_COLOR is set and non-empty or TERM is dumb. */
+enum preview_mode term_color_mode(void);
+
+/* Progress on standard error: shown only when it is a terminal and the render looks like
+ * taking more than about a second; redrawn at most ten times a second, erased at the end. */
+typedef struct {
+	int enabled;
+	double start, last_draw;
+	const trace_stats *stats; /* live ray counts, for rays/s */
+	int drawn;
+} progress_bar;
+
+void progress_start(progress_bar *p, int enabled, const trace_stats *stats);
+void progress_update(void *ctx, int done, int total); /* a progress_fn; ctx is the bar */
+void progress_finish(progress_bar *p);
+
+/* Seconds on a monotonic clock. */
+double term_now(void);
+
+#endif
