@@ -51,7 +51,35 @@ build/san/replay: $(LIB_SRC) tests/fuzz/fuzz_scene.c tests/fuzz/replay.c $(wildc
 	@mkdir -p $(@D)
 	$(CC) $(RT_CFLAGS) $(SAN_FLAGS) -Isrc $(CPPFLAGS) -O1 -o $@ $(LIB_SRC) tests/fuzz/fuzz_scene.c tests/fuzz/replay.c $(LDLIBS) $(RT_LDLIBS)
 
-test: rt build/unit-tests build/san/rt build/san/unit-tests build/san/replay
+# One source, several builds: the number types and the naive algorithm forms, each a
+# whole program built in one compiler call (build/rt-NAME).
+VARIANT_FLAGS_float = -DRT_REAL_FLOAT
+VARIANT_FLAGS_double = -DRT_REAL_DOUBLE
+VARIANT_FLAGS_ref = -DRT_REAL_LONG_DOUBLE
+VARIANT_FLAGS_sphere-textbook = -DRT_REAL_DOUBLE -DRT_SPHERE_TEXTBOOK=1
+VARIANT_FLAGS_hedron-per-face = -DRT_REAL_DOUBLE -DRT_HEDRON_PER_FACE=1
+VARIANT_FLAGS_offset-fixed = -DRT_REAL_DOUBLE -DRT_OFFSET_FIXED=1
+VARIANT_FLAGS_float-textbook = -DRT_REAL_FLOAT -DRT_SPHERE_TEXTBOOK=1
+VARIANT_FLAGS_float-per-face = -DRT_REAL_FLOAT -DRT_HEDRON_PER_FACE=1
+VARIANT_FLAGS_float-offset-fixed = -DRT_REAL_FLOAT -DRT_OFFSET_FIXED=1
+TYPES = float double ref
+ALGORITHMS = sphere-textbook hedron-per-face offset-fixed float-textbook float-per-face \
+	     float-offset-fixed
+
+variants: $(TYPES:%=build/rt-%)
+
+# The unit tests in every number type (each type's tolerances are in the tests).
+build/unit-tests-%: $(LIB_SRC) $(TEST_SRC) $(wildcard src/*.h tests/*.h)
+	@mkdir -p $(@D)
+	$(CC) $(RT_CFLAGS) $(VARIANT_FLAGS_$*) -Isrc $(CPPFLAGS) $(CFLAGS) -o $@ $(LIB_SRC) $(TEST_SRC) $(LDLIBS) $(RT_LDLIBS)
+algorithms: $(ALGORITHMS:%=build/rt-%)
+
+build/rt-%: $(SRC) $(wildcard src/*.h)
+	@mkdir -p $(@D)
+	$(CC) $(WARN) -ffp-contract=off $(VARIANT_FLAGS_$*) $(CPPFLAGS) $(CFLAGS) -o $@ $(SRC) $(LDLIBS) $(RT_LDLIBS)
+
+test: rt build/unit-tests build/san/rt build/san/unit-tests build/san/replay \
+      build/unit-tests-float build/unit-tests-ref
 	@sh tests/run.sh
 
 # Fuzzing with libFuzzer (clang): `make fuzz FUZZ_SECONDS=600`. New inputs collect in
@@ -85,6 +113,6 @@ uninstall:
 clean:
 	rm -rf build rt
 
-.PHONY: all test install uninstall clean fuzz fuzz-merge
+.PHONY: all test install uninstall clean fuzz fuzz-merge variants algorithms
 
 -include $(OBJ:.o=.d) $(TEST_OBJ:.o=.d)

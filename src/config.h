@@ -53,6 +53,18 @@
 #define RT_BVH_MIN_OBJECTS 12 /* scenes with fewer objects test them all: cheaper */
 #endif
 
+/* Algorithm choices, for measuring what robustness costs (tools/speed-vs-error). The
+ * defaults (0) are the robust forms; 1 selects the naive form the literature warns about. */
+#ifndef RT_SPHERE_TEXTBOOK
+#define RT_SPHERE_TEXTBOOK 0 /* 1: b^2 - 4ac and -b +- sqrt, not Hearn & Baker + stable roots */
+#endif
+#ifndef RT_HEDRON_PER_FACE
+#define RT_HEDRON_PER_FACE 0 /* 1: hit a face plane, then test the point against the others */
+#endif
+#ifndef RT_OFFSET_FIXED
+#define RT_OFFSET_FIXED 0 /* 1: secondary rays start 1e-4 off the surface, whatever its scale */
+#endif
+
 #define RT_DEFAULT_DEPTH 5 /* SPD's testing procedure uses 5 levels */
 
 /* Compile-time check (C99 has no static_assert): a negative array size fails to compile. */

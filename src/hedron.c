@@ -5,6 +5,44 @@
  * See LICENSE for copyright and licence. */
 #include "shape.h"
 
+#if RT_HEDRON_PER_FACE
+/* The per-face form, for comparison only: hit each face's plane, then keep the point if
+ * it is strictly inside every other plane. Rays through edges and vertices leak, because
+ * the point rounds to just outside a neighbouring plane (numerics.md section 3). */
+int hedron_intersect(const scene *s, const object *o, const ray *r, real tmin, real tmax,
+		     hit *h)
+{
+	const halfspace *planes = s->planes + o->u.hedron.first;
+	int count = o->u.hedron.count, i, j, face = -1;
+	real best = tmax;
+	for (i = 0; i < count; i++) {
+		real vd = vec_dot(planes[i].normal, r->dir), t;
+		vec3 p;
+		if (vd == REAL_C(0.0))
+			continue;
+		t = real_div(planes[i].offset - vec_dot(planes[i].normal, r->origin), vd);
+		if (!(t > tmin && t < best))
+			continue;
+		p = vec_madd(r->origin, t, r->dir);
+		for (j = 0; j < count; j++)
+			if (j != i && !(vec_dot(planes[j].normal, p) - planes[j].offset < REAL_C(0.0)))
+				break;
+		if (j == count) {
+			best = t;
+			face = i;
+		}
+	}
+	if (face < 0)
+		return 0;
+	if (h) {
+		h->t = best;
+		h->point = vec_madd(r->origin, best, r->dir);
+		h->normal = planes[face].normal;
+		h->shading = h->normal;
+	}
+	return 1;
+}
+#else
 int hedron_intersect(const scene *s, const object *o, const ray *r, real tmin, real tmax,
 		     hit *h)
 {
@@ -61,3 +99,4 @@ int hedron_intersect(const scene *s, const object *o, const ray *r, real tmin, r
 	}
 	return 1;
 }
+#endif

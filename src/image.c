@@ -81,10 +81,11 @@ static int ppm_begin(sink *self, int width, int height)
 	return ppm_write_header(self->write, self->ctx, width, height);
 }
 
-static int ppm_row(sink *self, const vec3 *colors)
+static int ppm_row(sink *self, const vec3 *colors, const int *ids)
 {
 	static unsigned char bytes[3 * RT_MAX_WIDTH];
 	ppm_sink *p = (ppm_sink *)self;
+	(void)ids;
 	image_encode_row(colors, p->width, bytes);
 	return self->write(self->ctx, bytes, (size_t)p->width * 3);
 }
@@ -104,4 +105,33 @@ void ppm_sink_init(ppm_sink *p, write_fn write, void *ctx)
 	p->base.ctx = ctx;
 	p->base.error = NULL;
 	p->width = 0;
+}
+
+static int ids_begin(sink *self, int width, int height)
+{
+	char header[64];
+	int n = snprintf(header, sizeof header, "P5\n%d %d\n65535\n", width, height);
+	((ids_sink *)self)->width = width;
+	return n > 0 && self->write(self->ctx, header, (size_t)n);
+}
+
+static int ids_row(sink *self, const vec3 *colors, const int *ids)
+{
+	static unsigned char bytes[2 * RT_MAX_WIDTH];
+	ids_sink *p = (ids_sink *)self;
+	int x;
+	(void)colors;
+	for (x = 0; x < p->width; x++) {
+		unsigned value = ids[x] < 0 ? 0u : (unsigned)ids[x] + 1u;
+		bytes[2 * x] = (unsigned char)(value >> 8);
+		bytes[2 * x + 1] = (unsigned char)(value & 0xFF);
+	}
+	return self->write(self->ctx, bytes, (size_t)p->width * 2);
+}
+
+void ids_sink_init(ids_sink *p, write_fn write, void *ctx)
+{
+	ppm_sink_init(p, write, ctx);
+	p->base.begin = ids_begin;
+	p->base.row = ids_row;
 }

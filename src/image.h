@@ -31,4 +31,11 @@ typedef struct {
 
 void ppm_sink_init(ppm_sink *p, write_fn write, void *ctx);
 
+/* The object-ID sink (--ids): a 16-bit binary PGM (P5, maxval 65535, big-endian samples)
+ * whose pixel is 1 + the index of the object the pixel's eye ray hit first, in scene
+ * order, and 0 where it hit nothing. For counting pixels that hit the wrong object. */
+typedef ppm_sink ids_sink;
+
+void ids_sink_init(ids_sink *p, write_fn write, void *ctx);
+
 #endif

@@ -27,14 +27,16 @@ static const char usage_text[] =
 	"preview instead.\n"
 	"\n"
 	"  -o FILE      write to FILE, in the format its name ends with: .ppm, .png,\n"
-	"               .txt (ASCII preview) or .ans (ANSI colour preview); FILE is\n"
-	"               replaced only when the render succeeds\n"
+	"               .txt (ASCII preview), .ans (ANSI colour preview) or .pgm\n"
+	"               (object IDs); FILE is replaced only when the render succeeds\n"
 	"  -s WxH       image size in pixels, overriding the scene's resolution\n"
 	"  -d N         ray tree depth, 1 to " RT_STRINGIFY(RT_MAX_DEPTH) " (eye ray = 1)\n"
 	"  --ascii      ASCII-art preview (7-bit, no escape sequences)\n"
 	"  --ansi       colour preview with half-blocks (24-bit if COLORTERM says so,\n"
 	"               else 256 colours; ASCII when NO_COLOR is set)\n"
 	"  --cols N     preview width in characters (default: the terminal's, else 80)\n"
+	"  --ids        instead of colours, write a 16-bit PGM of the object each pixel's\n"
+	"               eye ray hits first (1 + its index in the scene; 0 for none)\n"
 	"  --rows Y0:Y1 render only rows Y0 to Y1-1, as a PPM of that band (for splitting\n"
 	"               a render across processes: see tools/render-parallel)\n"
 	"  --spd        SPD testing procedure: corner rays, depth 5, no weight cutoff\n"
@@ -44,7 +46,10 @@ static const char usage_text[] =
 	"\n"
 	"Exit status: 0 on success, 1 on a scene or output error, 2 on a usage error.\n";
 
-enum format { FORMAT_DEFAULT, FORMAT_PPM, FORMAT_PNG, FORMAT_ASCII, FORMAT_ANSI };
+enum format { FORMAT_DEFAULT, FORMAT_PPM, FORMAT_PNG, FORMAT_ASCII, FORMAT_ANSI, FORMAT_IDS };
+
+/* --ids writes object numbers as 16-bit samples; 0 is "no object". */
+RT_STATIC_ASSERT(ids_fit_16_bits, RT_MAX_OBJECTS < 65536);
 
 typedef struct {
 	const char *scene_path;
@@ -94,8 +99,8 @@ static enum format format_of(const char *path)
 	static const struct {
 		const char *ending;
 		enum format format;
-	} endings[] = {{".ppm", FORMAT_PPM}, {".png", FORMAT_PNG}, {".txt", FORMAT_ASCII},
-		       {".ans", FORMAT_ANSI}};
+	} endings[] = {{".ppm", FORMAT_PPM},   {".png", FORMAT_PNG}, {".txt", FORMAT_ASCII},
+		       {".ans", FORMAT_ANSI}, {".pgm", FORMAT_IDS}};
 	size_t n = strlen(path), i;
 	for (i = 0; i < sizeof endings / sizeof endings[0]; i++) {
 		size_t k = strlen(endings[i].ending);
@@ -132,6 +137,10 @@ static int parse_options(int argc, char **argv, options *o)
 			o->stats = 1;
 		} else if (strcmp(a, "--spd") == 0) {
 			o->spd = 1;
+		} else if (strcmp(a, "--ids") == 0) {
+			status = choose_format(o, FORMAT_IDS, a);
+			if (status >= 0)
+				return status;
 		} else if (strcmp(a, "--ascii") == 0 || strcmp(a, "--ansi") == 0) {
 			status = choose_format(o, strcmp(a, "--ascii") == 0 ? FORMAT_ASCII : FORMAT_ANSI, a);
 			if (status >= 0)
@@ -145,7 +154,7 @@ static int parse_options(int argc, char **argv, options *o)
 				enum format f = format_of(value);
 				if (f == FORMAT_DEFAULT)
 					return usage_error("cannot tell the format of '%s' (name it "
-							   ".ppm, .png, .txt or .ans)",
+							   ".ppm, .png, .txt, .ans, or .pgm with --ids)",
 							   value);
 				o->output_path = value;
 				status = choose_format(o, f, value);
@@ -187,8 +196,10 @@ static int parse_options(int argc, char **argv, options *o)
 	/* On a terminal, binary PPM would only garble it: show a preview instead. */
 	if (o->format == FORMAT_DEFAULT)
 		o->format = !o->output_path && term_is_tty(1) ? FORMAT_ANSI : FORMAT_PPM;
-	if (o->row_end && o->format != FORMAT_PPM)
+	if (o->row_end && o->format != FORMAT_PPM && o->format != FORMAT_IDS)
 		return usage_error("--rows writes PPM bands only%s", "");
+	if (o->format == FORMAT_IDS && o->spd)
+		return usage_error("--ids needs one eye ray per pixel, not --spd's corners%s", "");
 	return -1;
 }
 
@@ -210,6 +221,7 @@ int main(int argc, char **argv)
 {
 	static union {
 		ppm_sink ppm;
+		ids_sink ids;
 		png_sink png;
 		preview_sink preview;
 	} sinks;
@@ -263,6 +275,10 @@ int main(int argc, char **argv)
 	case FORMAT_PNG:
 		png_sink_init(&sinks.png, output_write, &out);
 		target = &sinks.png.base;
+		break;
+	case FORMAT_IDS:
+		ids_sink_init(&sinks.ids, output_write, &out);
+		target = &sinks.ids.base;
 		break;
 	case FORMAT_ASCII:
 	case FORMAT_ANSI:

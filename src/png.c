@@ -170,9 +170,10 @@ static int png_begin(sink *self, int width, int height)
 	return 1;
 }
 
-static int png_row(sink *self, const vec3 *colors)
+static int png_row(sink *self, const vec3 *colors, const int *ids)
 {
 	png_sink *p = (png_sink *)self;
+	(void)ids;
 	image_encode_row(colors, p->width, p->rgb + (size_t)p->rows * (size_t)p->width * 3);
 	p->rows++;
 	return 1;

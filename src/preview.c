@@ -107,10 +107,11 @@ static int preview_begin(sink *self, int width, int height)
 	return width >= 1 && width <= RT_MAX_WIDTH;
 }
 
-static int preview_row(sink *self, const vec3 *colors)
+static int preview_row(sink *self, const vec3 *colors, const int *ids)
 {
 	static unsigned char lower[3 * RT_MAX_WIDTH];
 	preview_sink *p = (preview_sink *)self;
+	(void)ids;
 	if (!p->have_upper) {
 		image_encode_row(colors, p->width, p->upper);
 		p->have_upper = 1;

@@ -5,6 +5,7 @@
 
 /* Colours of one row of pixel centres, or two rows of pixel corners. */
 static vec3 row_colors[RT_MAX_WIDTH + 1];
+static int row_ids[RT_MAX_WIDTH + 1];
 static vec3 corner_rows[2][RT_MAX_WIDTH + 1];
 
 /* Eye rays through the corners on image line y (in pixels from the top). */
@@ -34,16 +35,17 @@ int render_image(tracer *t, const camera *c, enum render_sampling sampling, int 
 				vec3 sum = vec_add(vec_add(above[x], above[x + 1]),
 						   vec_add(below[x], below[x + 1]));
 				row_colors[x] = vec_scale(sum, REAL_C(0.25));
+				row_ids[x] = -1;
 			}
 			top = !top;
 		} else {
 			for (x = 0; x < c->width; x++) {
 				ray r = camera_ray(c, real_from_int(x) + REAL_C(0.5),
 						   real_from_int(y) + REAL_C(0.5));
-				row_colors[x] = tracer_eye(t, &r, NULL);
+				row_colors[x] = tracer_eye(t, &r, &row_ids[x]);
 			}
 		}
-		if (!out->row(out, row_colors))
+		if (!out->row(out, row_colors, row_ids))
 			return 0;
 		if (progress)
 			progress(progress_ctx, y + 1 - y0, y1 - y0);

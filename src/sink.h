@@ -16,8 +16,10 @@ typedef struct sink sink;
 struct sink {
 	/* The image that will arrive: width x height linear colours. Returns 1 if ok. */
 	int (*begin)(sink *self, int width, int height);
-	/* One row of `width` linear colours, top row first. Returns 1 if ok. */
-	int (*row)(sink *self, const vec3 *colors);
+	/* One row of `width` linear colours, top row first, with the index of the object
+	 * each pixel's eye ray hit first (-1 for none; -1 throughout with corner sampling,
+	 * where a pixel has four eye rays). Returns 1 if ok. */
+	int (*row)(sink *self, const vec3 *colors, const int *ids);
 	/* After the last row. Returns 1 if ok. */
 	int (*end)(sink *self);
 	write_fn write; /* where the bytes go */

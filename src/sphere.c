@@ -35,14 +35,24 @@ int sphere_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h
 	const sphere_shape *s = &o->u.sphere;
 	vec3 f = vec_sub(r->origin, s->center);
 	real b = vec_dot(f, r->dir);
+	real c = vec_dot(f, f) - s->radius2;
+	real t0, t1, t;
+#if RT_SPHERE_TEXTBOOK
+	/* The textbook form, for comparison only: b^2 - c cancels for small, distant or
+	 * grazing spheres, and -b +- sqrt cancels for huge ones (numerics.md section 1). */
+	real discriminant = real_mul(b, b) - c, root;
+	if (!(discriminant >= REAL_C(0.0)))
+		return 0;
+	root = real_sqrt(discriminant);
+	t0 = -b - root;
+	t1 = -b + root;
+#else
 	/* Perpendicular offset of the centre from the ray line: terms of size r^2, not |f|^2. */
 	vec3 v = vec_madd(f, -b, r->dir);
 	real discriminant = s->radius2 - vec_dot(v, v);
-	real c = vec_dot(f, f) - s->radius2;
-	real t0, t1, t;
-
 	if (!solve_quadratic(REAL_C(1.0), b, c, discriminant, &t0, &t1))
 		return 0;
+#endif
 	/* The near root enters, the far root leaves; an inside-only sphere shows only exits. */
 	if (t0 > tmin && t0 < tmax && !(o->flags & OBJ_INSIDE_ONLY))
 		t = t0;

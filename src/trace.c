@@ -51,8 +51,15 @@ void tracer_init(tracer *t, const scene *s, int depth, real cutoff)
 
 vec3 trace_offset(vec3 p, vec3 side, real t)
 {
+#if RT_OFFSET_FIXED
+	/* The classic fixed epsilon, for comparison only: too small far from the origin,
+	 * too large for small objects (numerics.md section 2). */
+	(void)t;
+	return vec_madd(p, REAL_C(1e-4), side);
+#else
 	real scale = real_max(REAL_C(1.0), real_max(vec_max_abs(p), real_fabs(t)));
 	return vec_madd(p, real_mul(REAL_OFFSET, scale), side);
+#endif
 }
 
 /* Index of refraction of the medium on top of the stack (1 for the outside). */

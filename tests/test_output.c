@@ -42,7 +42,7 @@ static void preview_rows(enum preview_mode mode, int width, const vec3 *row_colo
 	for (y = 0; y < rows; y++) {
 		for (x = 0; x < width; x++)
 			row[x] = row_colors[y];
-		CHECK(p.base.row(&p.base, row));
+		CHECK(p.base.row(&p.base, row, NULL));
 	}
 	CHECK(p.base.end(&p.base));
 	captured[captured_length] = '\0';
