@@ -172,13 +172,16 @@ static int sah_split(scene *s, int first, int count, vec3 node_lo, vec3 node_hi,
 			grow(&bin_lo[b], &bin_hi[b], object_lo[o]);
 			grow(&bin_lo[b], &bin_hi[b], object_hi[o]);
 		}
-		/* Sweep from the right, then from the left, pricing each plane between bins. */
+		/* Sweep from the right, then from the left, pricing each plane between bins.
+		 * An empty bin's box is inside out (+MAX..-MAX) and must not be grown by. */
 		empty_box(&run_lo, &run_hi);
 		n = 0;
 		for (i = BINS - 1; i > 0; i--) {
 			n += bin_count[i];
-			grow(&run_lo, &run_hi, bin_lo[i]);
-			grow(&run_lo, &run_hi, bin_hi[i]);
+			if (bin_count[i]) {
+				grow(&run_lo, &run_hi, bin_lo[i]);
+				grow(&run_lo, &run_hi, bin_hi[i]);
+			}
 			right_area[i] = half_area(run_lo, run_hi);
 			right_count[i] = n;
 		}
@@ -187,8 +190,10 @@ static int sah_split(scene *s, int first, int count, vec3 node_lo, vec3 node_hi,
 		for (i = 0; i < BINS - 1; i++) {
 			real cost;
 			n += bin_count[i];
-			grow(&run_lo, &run_hi, bin_lo[i]);
-			grow(&run_lo, &run_hi, bin_hi[i]);
+			if (bin_count[i]) {
+				grow(&run_lo, &run_hi, bin_lo[i]);
+				grow(&run_lo, &run_hi, bin_hi[i]);
+			}
 			if (n == 0 || right_count[i + 1] == 0)
 				continue;
 			cost = REAL_C(0.5) + real_div(real_mul(half_area(run_lo, run_hi), real_from_int(n)) +
