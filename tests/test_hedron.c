@@ -5,6 +5,7 @@
 #include <stdio.h>
 
 #include "shape.h"
+#include "support.h"
 #include "test.h"
 
 /* Several megabytes: static, never on the stack. */
@@ -50,14 +51,6 @@ static object cube_object(void)
 	o.u.hedron.first = 0;
 	o.u.hedron.count = 6;
 	return o;
-}
-
-static ray make_ray(vec3 origin, vec3 dir)
-{
-	ray r;
-	r.origin = origin;
-	r.dir = vec_normalize(dir);
-	return r;
 }
 
 /* What a row expects of the face normal. */
@@ -108,7 +101,7 @@ static const hedron_case cases[] = {
 
 static void run_case(const object *o, const hedron_case *k)
 {
-	ray r = make_ray(vec_make(k->o[0], k->o[1], k->o[2]), vec_make(k->d[0], k->d[1], k->d[2]));
+	ray r = test_ray(vec_make(k->o[0], k->o[1], k->o[2]), vec_make(k->d[0], k->d[1], k->d[2]));
 	char what[64];
 	hit h;
 	int got = hedron_intersect(&s, o, &r, k->tmin, REAL_MAX, &h);
@@ -198,7 +191,7 @@ static ray ray_through(const double p[3], const double dir[3], double back)
 	int i;
 	for (i = 0; i < 3; i++)
 		o[i] = p[i] - back * dir[i];
-	return make_ray(to_vec(o), to_vec(dir));
+	return test_ray(to_vec(o), to_vec(dir));
 }
 
 /* A point on a cube edge (vertex = 0) or a vertex (vertex = 1), in cube coordinates,

@@ -9,6 +9,7 @@
 #include "optics.h"
 #include "parse.h"
 #include "shape.h"
+#include "support.h"
 #include "test.h"
 
 #define GLASS REAL_C(1.5)
@@ -198,17 +199,6 @@ static void test_beer(void)
 
 /* ---- N01-N05 ------------------------------------------------------------------- */
 
-typedef struct {
-	const char *text;
-	size_t at;
-} text_reader;
-
-static int read_text(void *ctx)
-{
-	text_reader *t = ctx;
-	return t->text[t->at] ? (unsigned char)t->text[t->at++] : -1;
-}
-
 static char last_message[256];
 
 static void capture(void *ctx, const char *message)
@@ -221,15 +211,8 @@ static void capture(void *ctx, const char *message)
 static int parse_quietly(const char *text)
 {
 	static scene s; /* several megabytes */
-	text_reader t;
-	int ok;
-	t.text = text;
-	t.at = 0;
 	last_message[0] = '\0';
-	diag_set_sink(capture, NULL);
-	ok = parse_scene(&s, "n.nff", read_text, &t);
-	diag_set_sink(NULL, NULL);
-	return ok;
+	return test_parse_text(&s, "n.nff", text, capture, NULL);
 }
 
 #define VIEW "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 45\nhither 1\nresolution 4 4\n"

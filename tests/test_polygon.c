@@ -8,6 +8,7 @@
 #include "diag.h"
 #include "parse.h"
 #include "shape.h"
+#include "support.h"
 #include "test.h"
 
 /* Several megabytes: static, never on the stack. */
@@ -50,14 +51,6 @@ static object polygon_object(int first, int count, vec3 normal, real offset, int
 static object xy_polygon(const real *xy, int count, unsigned flags)
 {
 	return polygon_object(add_xy(xy, count), count, vec_make(0, 0, 1), 0, 2, flags);
-}
-
-static ray make_ray(vec3 origin, vec3 dir)
-{
-	ray r;
-	r.origin = origin;
-	r.dir = vec_normalize(dir);
-	return r;
 }
 
 static int contains(const object *o, real x, real y)
@@ -103,7 +96,7 @@ static void test_square(void)
 	}
 
 	/* G01 through the ray: O(0.5, 0.5, 1) D(0, 0, -1) hits at t = 1. */
-	r = make_ray(vec_make(REAL_C(0.5), REAL_C(0.5), 1), vec_make(0, 0, -1));
+	r = test_ray(vec_make(REAL_C(0.5), REAL_C(0.5), 1), vec_make(0, 0, -1));
 	CHECK(polygon_intersect(&s, &square, &r, 0, REAL_MAX, &h));
 	CHECK_NEAR(h.t, 1.0, 0.0);
 	CHECK_NEAR(h.point.x, 0.5, 0.0);
@@ -115,13 +108,13 @@ static void test_square(void)
 	CHECK(!polygon_intersect(&s, &square, &r, 0, REAL_C(0.5), &h));
 	CHECK(!polygon_intersect(&s, &square, &r, REAL_C(1.5), REAL_MAX, &h));
 	/* An opaque polygon is one-sided: from behind it is not there; two-sided it is. */
-	r = make_ray(vec_make(REAL_C(0.5), REAL_C(0.5), -1), vec_make(0, 0, 1));
+	r = test_ray(vec_make(REAL_C(0.5), REAL_C(0.5), -1), vec_make(0, 0, 1));
 	CHECK(!polygon_intersect(&s, &square, &r, 0, REAL_MAX, &h));
 	square.flags = OBJ_TWO_SIDED;
 	CHECK(polygon_intersect(&s, &square, &r, 0, REAL_MAX, &h));
 	CHECK_NEAR(h.t, 1.0, 0.0);
 	/* Beside the square, the plane is hit but the point is outside. */
-	r = make_ray(vec_make(REAL_C(1.5), REAL_C(0.5), 1), vec_make(0, 0, -1));
+	r = test_ray(vec_make(REAL_C(1.5), REAL_C(0.5), 1), vec_make(0, 0, -1));
 	CHECK(!polygon_intersect(&s, &square, &r, 0, REAL_MAX, &h));
 }
 
@@ -138,9 +131,9 @@ static void test_parallel(void)
 	square = xy_polygon(unit_square, 4, 0);
 	for (flags = 0; flags <= OBJ_TWO_SIDED; flags += OBJ_TWO_SIDED) {
 		square.flags = (unsigned char)flags;
-		r = make_ray(vec_make(REAL_C(0.5), REAL_C(0.5), 1), vec_make(1, 0, 0));
+		r = test_ray(vec_make(REAL_C(0.5), REAL_C(0.5), 1), vec_make(1, 0, 0));
 		CHECK(!polygon_intersect(&s, &square, &r, 0, REAL_MAX, &h));
-		r = make_ray(vec_make(-1, REAL_C(0.5), 0), vec_make(1, 0, 0));
+		r = test_ray(vec_make(-1, REAL_C(0.5), 0), vec_make(1, 0, 0));
 		CHECK(!polygon_intersect(&s, &square, &r, 0, REAL_MAX, &h));
 	}
 }
@@ -196,17 +189,6 @@ static void test_concave(void)
 
 /* ---- G05 through the parser --------------------------------------------------- */
 
-typedef struct {
-	const char *text;
-	size_t at;
-} text_reader;
-
-static int read_text(void *ctx)
-{
-	text_reader *t = ctx;
-	return t->text[t->at] ? (unsigned char)t->text[t->at++] : -1;
-}
-
 /* Counts the parser's zero-area warnings (other messages are not this test's business). */
 static int zero_area_warnings;
 
@@ -221,16 +203,14 @@ static void capture(void *ctx, const char *message)
  * warning instead of dividing by its length. */
 static void test_collinear(void)
 {
-	text_reader t;
 	int ok;
-	t.text = "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 45\nhither 1\nresolution 4 4\n"
-		 "p 3\n0 0 0\n1 0 0\n2 0 0\n"
-		 "p 3\n0 0 0\n1 0 0\n0 1 0\n";
-	t.at = 0;
 	zero_area_warnings = 0;
-	diag_set_sink(capture, NULL);
-	ok = parse_scene(&s, "g05.nff", read_text, &t);
-	diag_set_sink(NULL, NULL);
+	ok = test_parse_text(&s, "g05.nff",
+			     "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 45\nhither 1\n"
+			     "resolution 4 4\n"
+			     "p 3\n0 0 0\n1 0 0\n2 0 0\n"
+			     "p 3\n0 0 0\n1 0 0\n0 1 0\n",
+			     capture, NULL);
 	CHECK(ok);
 	/* Only the second, proper triangle is left, with a unit normal. */
 	CHECK_INT(s.object_count, 1);
@@ -436,7 +416,7 @@ static void test_grid(void)
 		} while (len > 1.0 || cosine < 0.2);
 		for (i = 0; i < 3; i++)
 			w[i] /= len;
-		r = make_ray(vec_make((real)(p[0] + back * w[0]), (real)(p[1] + back * w[1]),
+		r = test_ray(vec_make((real)(p[0] + back * w[0]), (real)(p[1] + back * w[1]),
 				      (real)(p[2] + back * w[2])),
 			     vec_make((real)-w[0], (real)-w[1], (real)-w[2]));
 		for (i = 0; i < g.polygons; i++)
@@ -469,10 +449,10 @@ static void test_other_axes(void)
 	add_vertex(vec_make(2, 1, 1), 0);
 	add_vertex(vec_make(2, 0, 1), 0);
 	o = polygon_object(first, 4, vec_make(1, 0, 0), 2, 0, 0);
-	r = make_ray(vec_make(5, REAL_C(0.25), REAL_C(0.75)), vec_make(-1, 0, 0));
+	r = test_ray(vec_make(5, REAL_C(0.25), REAL_C(0.75)), vec_make(-1, 0, 0));
 	CHECK(polygon_intersect(&s, &o, &r, 0, REAL_MAX, &h));
 	CHECK_NEAR(h.t, 3.0, 0.0);
-	r = make_ray(vec_make(5, REAL_C(1.25), REAL_C(0.75)), vec_make(-1, 0, 0));
+	r = test_ray(vec_make(5, REAL_C(1.25), REAL_C(0.75)), vec_make(-1, 0, 0));
 	CHECK(!polygon_intersect(&s, &o, &r, 0, REAL_MAX, &h));
 
 	/* The same square in the plane y = -3, facing -y. */
@@ -482,12 +462,12 @@ static void test_other_axes(void)
 	add_vertex(vec_make(1, -3, 1), 1);
 	add_vertex(vec_make(1, -3, 0), 1);
 	o = polygon_object(first, 4, vec_make(0, -1, 0), 3, 1, 0);
-	r = make_ray(vec_make(REAL_C(0.5), -7, REAL_C(0.5)), vec_make(0, 1, 0));
+	r = test_ray(vec_make(REAL_C(0.5), -7, REAL_C(0.5)), vec_make(0, 1, 0));
 	CHECK(polygon_intersect(&s, &o, &r, 0, REAL_MAX, &h));
 	CHECK_NEAR(h.t, 4.0, 0.0);
 	CHECK(h.normal.x == 0 && h.normal.y == -1 && h.normal.z == 0);
 	/* From behind, one-sided: nothing. */
-	r = make_ray(vec_make(REAL_C(0.5), 1, REAL_C(0.5)), vec_make(0, -1, 0));
+	r = test_ray(vec_make(REAL_C(0.5), 1, REAL_C(0.5)), vec_make(0, -1, 0));
 	CHECK(!polygon_intersect(&s, &o, &r, 0, REAL_MAX, &h));
 }
 
@@ -495,7 +475,7 @@ static void test_other_axes(void)
  * triangle holding the hit; the geometric normal stays the face's. */
 static void check_patch_normal(const object *o, real x, real y, const double expect[3])
 {
-	ray r = make_ray(vec_make(x, y, 1), vec_make(0, 0, -1));
+	ray r = test_ray(vec_make(x, y, 1), vec_make(0, 0, -1));
 	double len = sqrt(expect[0] * expect[0] + expect[1] * expect[1] + expect[2] * expect[2]);
 	hit h;
 	if (!CHECK(polygon_intersect(&s, o, &r, 0, REAL_MAX, &h)))

@@ -8,6 +8,7 @@
 #include "bvh.h"
 #include "intersect.h"
 #include "optics.h"
+#include "support.h"
 #include "test.h"
 #include "trace.h"
 
@@ -71,14 +72,6 @@ static void from_vec(vec3 v, double out[3])
 	out[0] = (double)v.x;
 	out[1] = (double)v.y;
 	out[2] = (double)v.z;
-}
-
-static ray make_ray(vec3 origin, vec3 dir)
-{
-	ray r;
-	r.origin = origin;
-	r.dir = vec_normalize(dir);
-	return r;
 }
 
 /* A ray leaving the hit h on the side `side` (its faced normal, or the opposite), with
@@ -197,7 +190,7 @@ static void self_hit_sphere(const sphere_setup *setup)
 		}
 		for (k = 0; k < 3; k++)
 			d[k] = target[k] - o[k];
-		r = make_ray(to_vec(o), to_vec(d));
+		r = test_ray(to_vec(o), to_vec(d));
 		if (!scene_intersect(&s, &r, REAL_MAX, &h)) {
 			no_primary++;
 			continue;
@@ -342,7 +335,7 @@ static void self_hit_hedron(const char *name, const frame *f)
 		rnd_around(normal, 0.2, 1.0, w);
 		for (i = 0; i < 3; i++)
 			o[i] = p[i] + back * w[i];
-		r = make_ray(to_vec(o), vec_make((real)-w[0], (real)-w[1], (real)-w[2]));
+		r = test_ray(to_vec(o), vec_make((real)-w[0], (real)-w[1], (real)-w[2]));
 		if (!scene_intersect(&s, &r, REAL_MAX, &h) || !h.front) {
 			no_primary++;
 			continue;
@@ -455,7 +448,7 @@ static void self_hit_polygon(const char *name, const double origin[3], unsigned 
 			p[i] = origin[i] + a * e1[i] + b * e2[i];
 			o[i] = p[i] + back * w[i];
 		}
-		r = make_ray(to_vec(o), vec_make((real)-w[0], (real)-w[1], (real)-w[2]));
+		r = test_ray(to_vec(o), vec_make((real)-w[0], (real)-w[1], (real)-w[2]));
 		if (!scene_intersect(&s, &r, REAL_MAX, &h)) {
 			no_primary++;
 			continue;
@@ -609,7 +602,7 @@ static void fall_through(const char *name, fixture *fx)
 		rnd_around(grid_n, 0.1, 1.0, w);
 		for (k = 0; k < 3; k++)
 			o[k] = p[k] + back * w[k];
-		r = make_ray(to_vec(o), vec_make((real)-w[0], (real)-w[1], (real)-w[2]));
+		r = test_ray(to_vec(o), vec_make((real)-w[0], (real)-w[1], (real)-w[2]));
 		if (!scene_intersect(&s, &r, REAL_MAX, &h))
 			grid_leaks++;
 		else if (!(h.object < fx->polygons &&
@@ -635,7 +628,7 @@ static void fall_through(const char *name, fixture *fx)
 			dir[k] /= sqrt(dot3(dl, dl));
 		for (k = 0; k < 3; k++)
 			o[k] = p[k] - back * dir[k];
-		r = make_ray(to_vec(o), to_vec(dir));
+		r = test_ray(to_vec(o), to_vec(dir));
 		if (!scene_intersect(&s, &r, REAL_MAX, &h))
 			cube_leaks++;
 		else if (!(h.object == fx->cube &&

@@ -4,6 +4,7 @@
 #include <stdio.h>
 
 #include "shape.h"
+#include "support.h"
 #include "test.h"
 
 /* One catalog row: ray O + tD (D normalised here, in the tested precision), sphere C, r.
@@ -104,18 +105,10 @@ static object make_sphere(vec3 center, real radius, unsigned flags)
 	return o;
 }
 
-static ray make_ray(vec3 origin, vec3 dir)
-{
-	ray r;
-	r.origin = origin;
-	r.dir = vec_normalize(dir);
-	return r;
-}
-
 static void run_case(const sphere_case *k)
 {
 	object o = make_sphere(vec_make(k->c[0], k->c[1], k->c[2]), k->radius, OBJ_TWO_SIDED);
-	ray r = make_ray(vec_make(k->o[0], k->o[1], k->o[2]), vec_make(k->d[0], k->d[1], k->d[2]));
+	ray r = test_ray(vec_make(k->o[0], k->o[1], k->o[2]), vec_make(k->d[0], k->d[1], k->d[2]));
 	char what[64];
 	hit h;
 	int got = sphere_intersect(&o, &r, k->tmin, REAL_MAX, &h);
@@ -181,7 +174,7 @@ static void test_solve_quadratic(void)
 static void test_sphere_contract(void)
 {
 	object o = make_sphere(vec_make(0, 0, 5), 1, OBJ_TWO_SIDED);
-	ray r = make_ray(vec_make(0, 0, 0), vec_make(0, 0, 1));
+	ray r = test_ray(vec_make(0, 0, 0), vec_make(0, 0, 1));
 	hit h;
 
 	/* S01's hit at t = 4 lies outside (0, 3.9) and inside (0, 4.1). */

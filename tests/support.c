@@ -1,0 +1,43 @@
+/* support.c - helpers shared by the unit-test suites.
+ * See LICENSE for copyright and licence. */
+#include "support.h"
+
+#include "parse.h"
+
+ray test_ray(vec3 origin, vec3 dir)
+{
+	ray r;
+	r.origin = origin;
+	r.dir = vec_normalize(dir);
+	return r;
+}
+
+typedef struct {
+	const char *text;
+	size_t at;
+} text_reader;
+
+static int read_text(void *ctx)
+{
+	text_reader *t = ctx;
+	return t->text[t->at] ? (unsigned char)t->text[t->at++] : -1;
+}
+
+static void drop(void *ctx, const char *message)
+{
+	(void)ctx;
+	(void)message;
+}
+
+int test_parse_text(scene *s, const char *name, const char *text, diag_sink_fn sink,
+		    void *ctx)
+{
+	text_reader t;
+	int ok;
+	t.text = text;
+	t.at = 0;
+	diag_set_sink(sink ? sink : drop, ctx);
+	ok = parse_scene(s, name, read_text, &t);
+	diag_set_sink(NULL, NULL);
+	return ok;
+}
