@@ -60,7 +60,7 @@ static int hedron_bounds(const scene *s, const object *o, vec3 *lo, vec3 *hi)
 				vec3 jk = vec_cross(planes[j].normal, planes[k].normal);
 				real det = vec_dot(planes[i].normal, jk);
 				vec3 p;
-				if (real_fabs(det) < REAL_C(1e-9))
+				if (!(real_fabs(det) > REAL_C(1e-9)))
 					continue;
 				p = vec_scale(jk, planes[i].offset);
 				p = vec_madd(p, planes[j].offset,
@@ -69,7 +69,7 @@ static int hedron_bounds(const scene *s, const object *o, vec3 *lo, vec3 *hi)
 					     vec_cross(planes[i].normal, planes[j].normal));
 				p = vec_scale(p, real_div(REAL_C(1.0), det));
 				for (m = 0; m < count + 6; m++) {
-					real slack = real_mul(REAL_OFFSET, real_max(REAL_C(1.0), vec_max_abs(p)));
+					real slack = real_surface_offset(real_max(REAL_C(1.0), vec_max_abs(p)));
 					if (vec_dot(planes[m].normal, p) - planes[m].offset > slack)
 						break;
 				}
@@ -126,16 +126,16 @@ static int object_bounds(const scene *s, const object *o, vec3 *lo, vec3 *hi)
  * The comparison keeps a NaN or out-of-range quotient from reaching the int conversion. */
 static int bin_of(real offset, real extent)
 {
-	real b = real_div(real_mul(offset, real_from_int(BINS)), extent);
+	real b = real_mul(real_div(offset, extent), real_from_int(BINS));
 	return b >= REAL_C(0.0) ? (b < real_from_int(BINS) ? (int)b : BINS - 1) : 0;
 }
 
-static real half_area(vec3 lo, vec3 hi)
+static real2 half_area(vec3 lo, vec3 hi)
 {
 	vec3 d = vec_sub(hi, lo);
 	if (d.x < 0 || d.y < 0 || d.z < 0)
-		return REAL_C(0.0);
-	return real_mul(d.x, d.y) + real_mul(d.y, d.z) + real_mul(d.z, d.x);
+		return 0;
+	return real_mul2(d.x, d.y) + real_mul2(d.y, d.z) + real_mul2(d.z, d.x);
 }
 
 /* Chooses the split of index[first .. first+count) with the lowest SAH cost over BINS
@@ -145,7 +145,8 @@ static int sah_split(scene *s, int first, int count, vec3 node_lo, vec3 node_hi,
 {
 	int *index = s->bvh_index;
 	vec3 clo, chi;
-	real best_cost, node_area = half_area(node_lo, node_hi);
+	real2 node_area = half_area(node_lo, node_hi);
+	real best_cost;
 	int best_axis = -1, best_plane = 0, axis, i, left;
 	empty_box(&clo, &chi);
 	for (i = 0; i < count; i++)
@@ -157,7 +158,7 @@ static int sah_split(scene *s, int first, int count, vec3 node_lo, vec3 node_hi,
 		real lo = vec_get(clo, axis), extent = vec_get(chi, axis) - lo;
 		int bin_count[BINS];
 		vec3 bin_lo[BINS], bin_hi[BINS], run_lo, run_hi;
-		real right_area[BINS];
+		real2 right_area[BINS];
 		int right_count[BINS], n;
 		if (!(extent > REAL_C(0.0)))
 			continue;
@@ -196,10 +197,13 @@ static int sah_split(scene *s, int first, int count, vec3 node_lo, vec3 node_hi,
 			}
 			if (n == 0 || right_count[i + 1] == 0)
 				continue;
-			cost = REAL_C(0.5) + real_div(real_mul(half_area(run_lo, run_hi), real_from_int(n)) +
-							      real_mul(right_area[i + 1],
-								       real_from_int(right_count[i + 1])),
-						      node_area);
+			/* Areas relative to the node's: the chance that a ray entering the node
+			 * enters each child. */
+			cost = REAL_C(0.5) +
+			       real_mul(real2_ratio(half_area(run_lo, run_hi), node_area),
+					real_from_int(n)) +
+			       real_mul(real2_ratio(right_area[i + 1], node_area),
+					real_from_int(right_count[i + 1]));
 			if (cost < best_cost) {
 				best_cost = cost;
 				best_axis = axis;
@@ -280,8 +284,8 @@ void bvh_build(scene *s)
 		if (bounded[i]) {
 			/* Pad by the secondary-ray offset scale so rounding never loses a hit that
 			 * the object's own test would find. */
-			real pad = real_mul(REAL_OFFSET, real_max(REAL_C(1.0),
-								  real_max(vec_max_abs(lo), vec_max_abs(hi))));
+			real pad = real_surface_offset(
+				real_max(REAL_C(1.0), real_max(vec_max_abs(lo), vec_max_abs(hi))));
 			vec3 p = vec_make(pad, pad, pad);
 			object_lo[i] = vec_sub(lo, p);
 			object_hi[i] = vec_add(hi, p);

@@ -15,13 +15,13 @@ int cone_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h)
 	real radius_at_origin = c->base_radius + real_mul(c->slope, oh);
 	real slope_dh = real_mul(c->slope, dh);
 	/* |fp + t dp|^2 = (radius_at_origin + slope dh t)^2, as a t^2 + 2 b t + cc = 0. */
-	real a = vec_dot(dp, dp) - real_mul(slope_dh, slope_dh);
+	real a = vec_dot(dp, dp) - real_mul(slope_dh, slope_dh); /* unitless */
 	real b = vec_dot(fp, dp) - real_mul(radius_at_origin, slope_dh);
-	real cc = vec_dot(fp, fp) - real_mul(radius_at_origin, radius_at_origin);
+	real2 cc = vec_dot2(fp, fp) - real_mul2(radius_at_origin, radius_at_origin);
 	real roots[2];
 	int i;
 
-	if (!solve_quadratic(a, b, cc, real_mul(b, b) - real_mul(a, cc), &roots[0], &roots[1]))
+	if (!solve_quadratic(a, b, cc, real_mul2(b, b) - real2_scale(cc, a), &roots[0], &roots[1]))
 		return 0;
 	for (i = 0; i < 2; i++) {
 		real t = roots[i], height;

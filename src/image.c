@@ -9,33 +9,37 @@
 
 #include <stdio.h>
 
-/* Linear value at which each 8-bit code starts: decode((code - 0.5) / 255) for
- * code = 1..255. Filled once; a binary search then encodes without pow per pixel. */
-static real thresholds[256];
-static int thresholds_ready;
-
-static double srgb_decode(double v)
-{
-	return v <= 0.04045 ? v / 12.92 : pow((v + 0.055) / 1.055, 2.4);
-}
-
-static void init_thresholds(void)
-{
-	int code;
-	thresholds[0] = REAL_C(0.0);
-	for (code = 1; code < 256; code++)
-		thresholds[code] = (real)srgb_decode((code - 0.5) / 255.0);
-	thresholds_ready = 1;
-}
-
+/* sRGB's transfer curve, linear light from an encoded value in [0, 1]. */
 static real decode_channel(real v)
 {
-	return v <= REAL_C(0.0) ? REAL_C(0.0) : v >= REAL_C(1.0) ? v : (real)srgb_decode((double)v);
+	if (v <= REAL_C(0.0))
+		return REAL_C(0.0);
+	if (v >= REAL_C(1.0))
+		return v;
+	if (v <= REAL_C(0.04045))
+		return real_div(v, REAL_C(12.92));
+	return real_pow(real_div(v + REAL_C(0.055), REAL_C(1.055)), REAL_C(2.4));
 }
 
 vec3 image_srgb_to_linear(vec3 srgb)
 {
 	return vec_make(decode_channel(srgb.x), decode_channel(srgb.y), decode_channel(srgb.z));
+}
+
+/* Linear value at which each 8-bit code starts: decode((code - 0.5) / 255), computed once
+ * in the build's own type, so that code -> linear -> code returns the same code. A
+ * binary search then encodes without a power per pixel. */
+static real srgb_thresholds[256];
+static int thresholds_ready;
+
+static void init_thresholds(void)
+{
+	int code;
+	srgb_thresholds[0] = REAL_C(0.0);
+	for (code = 1; code < 256; code++)
+		srgb_thresholds[code] =
+			decode_channel(real_div(real_from_int(code) - REAL_C(0.5), REAL_C(255.0)));
+	thresholds_ready = 1;
 }
 
 unsigned char image_srgb_byte(real linear)
@@ -49,7 +53,7 @@ unsigned char image_srgb_byte(real linear)
 	/* Largest code whose threshold is <= linear. */
 	while (lo < hi) {
 		int mid = (lo + hi + 1) / 2;
-		if (thresholds[mid] <= linear)
+		if (srgb_thresholds[mid] <= linear)
 			lo = mid;
 		else
 			hi = mid - 1;

@@ -203,7 +203,14 @@ static int parse_options(int argc, char **argv, options *o)
 	return -1;
 }
 
-static void print_stats(const trace_stats *st, double parse_seconds, double seconds)
+/* Writes a duration in microseconds as seconds with six decimals. */
+static void print_seconds(const char *name, unsigned long long micros)
+{
+	fprintf(stderr, "%s: %llu.%06llu\n", name, micros / 1000000u, micros % 1000000u);
+}
+
+static void print_stats(const trace_stats *st, unsigned long long parse_micros,
+			unsigned long long micros)
 {
 	unsigned long rays = st->eye_rays + st->shadow_rays + st->reflect_rays + st->refract_rays;
 	fprintf(stderr, "objects: %d\n", the_scene.object_count);
@@ -212,9 +219,10 @@ static void print_stats(const trace_stats *st, double parse_seconds, double seco
 	fprintf(stderr, "shadow_rays: %lu\n", st->shadow_rays);
 	fprintf(stderr, "reflect_rays: %lu\n", st->reflect_rays);
 	fprintf(stderr, "refract_rays: %lu\n", st->refract_rays);
-	fprintf(stderr, "parse_seconds: %.6f\n", parse_seconds);
-	fprintf(stderr, "seconds: %.6f\n", seconds);
-	fprintf(stderr, "rays_per_second: %.0f\n", seconds > 0 ? (double)rays / seconds : 0.0);
+	print_seconds("parse_seconds", parse_micros);
+	print_seconds("seconds", micros);
+	fprintf(stderr, "rays_per_second: %llu\n",
+		micros ? (unsigned long long)rays * 1000000u / micros : 0u);
 }
 
 int main(int argc, char **argv)
@@ -231,17 +239,17 @@ int main(int argc, char **argv)
 	progress_bar bar;
 	sink *target;
 	int status = parse_options(argc, argv, &opt), width, height, depth, ok;
-	double start, parsed;
+	unsigned long long start, parsed;
 
 	if (status >= 0)
 		return status;
-	start = term_now();
+	start = term_micros();
 	if (!parse_scene_file(&the_scene, opt.scene_path))
 		return 1;
 #if RT_USE_BVH
 	bvh_build(&the_scene);
 #endif
-	parsed = term_now();
+	parsed = term_micros();
 	width = opt.width ? opt.width : the_scene.camera.width;
 	height = opt.height ? opt.height : the_scene.camera.height;
 	if (opt.format == FORMAT_ASCII || opt.format == FORMAT_ANSI) {
@@ -305,6 +313,6 @@ int main(int argc, char **argv)
 	if (!output_close(&out, ok))
 		return 1;
 	if (opt.stats)
-		print_stats(&the_tracer.stats, parsed - start, term_now() - parsed);
+		print_stats(&the_tracer.stats, parsed - start, term_micros() - parsed);
 	return 0;
 }

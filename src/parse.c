@@ -5,6 +5,7 @@
 #include "parse.h"
 
 #include <errno.h>
+#include <limits.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
@@ -22,6 +23,7 @@ typedef struct {
 	void *ctx;
 	const char *file;
 	int line;     /* line of the next byte */
+	int last_line; /* line of the last byte read: where the end of the file is reported */
 	int pending;  /* a byte read ahead, or NO_BYTE */
 	int at_start; /* nothing read yet: a byte-order mark may follow */
 	char tok[RT_TOKEN_MAX + 1];
@@ -29,6 +31,7 @@ typedef struct {
 	int pushed;    /* the current token was given back and comes again */
 	int have_tok;  /* tok holds a token (not end of input) */
 	int failed;    /* an error was reported */
+	int length_shift; /* lengths are read times 2^length_shift (fixed point's scale) */
 } lexer;
 
 static int next_byte(lexer *lx)
@@ -40,7 +43,10 @@ static int next_byte(lexer *lx)
 	} else {
 		c = lx->read(lx->ctx);
 	}
-	if (c == '\n')
+	if (c >= 0)
+		lx->last_line = lx->line;
+	/* Saturates: a hostile file of 2^31 newlines must not overflow the counter. */
+	if (c == '\n' && lx->line < INT_MAX)
 		lx->line++;
 	return c;
 }
@@ -49,9 +55,9 @@ static int next_byte(lexer *lx)
 static int fail(lexer *lx, int line, const char *fmt, ...) RT_PRINTF(3, 4);
 static int fail(lexer *lx, int line, const char *fmt, ...)
 {
-	char message[384];
-	va_list ap;
 	if (!lx->failed) {
+		char message[384];
+		va_list ap;
 		va_start(ap, fmt);
 		vsnprintf(message, sizeof message, fmt, ap);
 		va_end(ap);
@@ -69,18 +75,21 @@ static int is_space(int c)
 /* A byte-order mark at the start: UTF-8's is skipped, UTF-16's is refused. */
 static int check_start(lexer *lx)
 {
-	int c = next_byte(lx), d;
+	int c = next_byte(lx);
 	lx->at_start = 0;
 	if (c == 0xFF || c == 0xFE) {
-		d = next_byte(lx);
+		int d = next_byte(lx);
 		if ((c == 0xFF && d == 0xFE) || (c == 0xFE && d == 0xFF))
 			return fail(lx, 1, "the file is UTF-16 text; save it as ASCII or UTF-8");
 		/* Only one byte can be given back, and c is no text byte anyway: report it
 		 * here (a newline in d would otherwise move the error to line 2). */
 		return fail(lx, 1, "unexpected byte 0x%02X (this is not a text scene file)",
 			    (unsigned)c);
-	} else if (c == 0xEF) {
-		if (next_byte(lx) == 0xBB && next_byte(lx) == 0xBF)
+	}
+	if (c == 0xEF) {
+		/* Read one at a time: the second byte is read only if the first matched. */
+		int b = next_byte(lx);
+		if (b == 0xBB && next_byte(lx) == 0xBF)
 			return 1;
 		return fail(lx, 1, "unexpected bytes at the start of the file");
 	}
@@ -111,8 +120,10 @@ static int next_token(lexer *lx)
 				c = next_byte(lx);
 		}
 		if (c < 0) {
+			/* The end of the file is on its last line (an editor's last line), not
+			 * on the empty line after a final newline. */
 			lx->tok[0] = '\0';
-			lx->tok_line = lx->line;
+			lx->tok_line = lx->last_line;
 			return lx->have_tok = 0;
 		}
 		if (!is_space(c))
@@ -150,27 +161,47 @@ static void push_back(lexer *lx) { lx->pushed = 1; }
 
 /* ---- numbers ------------------------------------------------------------------- */
 
-/* Reads one finite number; `what` names it in messages ("sphere radius"). */
-static int read_number(lexer *lx, const char *what, real *out)
+/* Is the whole token a number (finite or not)? */
+static int is_number(const char *tok)
 {
-	char *end;
+	real unused;
+	return real_from_text(tok, 0, &unused) != REAL_TEXT_NOT_A_NUMBER;
+}
+
+/* Reads one finite number times 2^shift; `what` names it in messages ("sphere radius"). */
+static int read_scaled(lexer *lx, const char *what, int shift, real *out)
+{
+	*out = REAL_C(0.0); /* defined even on failure (static analysis cannot see through fail) */
 	if (!next_token(lx)) {
 		if (lx->failed)
 			return 0;
 		return fail(lx, lx->tok_line, "unexpected end of file (expected %s)", what);
 	}
-	errno = 0;
-	*out = real_parse(lx->tok, &end);
-	if (end == lx->tok || *end != '\0')
+	switch (real_from_text(lx->tok, shift, out)) {
+	case REAL_TEXT_OK:
+		return 1;
+	case REAL_TEXT_NOT_A_NUMBER:
 		return fail(lx, lx->tok_line, "expected %s, got '%s'", what, lx->tok);
-	/* Underflow to a tiny value is harmless; overflow, NaN and infinity are not. */
-	if (!real_isfinite(*out))
+	case REAL_TEXT_NOT_FINITE:
+		/* Underflow to a tiny value is harmless; overflow, NaN and infinity are not. */
 		return fail(lx, lx->tok_line, "expected %s, got '%s' (not a finite number)", what,
 			    lx->tok);
-	if (real_fabs(*out) > REAL_INPUT_LIMIT)
-		return fail(lx, lx->tok_line, "expected %s within +-1e12, got '%s' (out of range)",
-			    what, lx->tok);
-	return 1;
+	default:
+		return fail(lx, lx->tok_line, "expected %s within %s, got '%s' (out of range)",
+			    what, REAL_RANGE_TEXT, lx->tok);
+	}
+}
+
+/* A plain number (a colour, a weight, an angle, a direction). */
+static int read_number(lexer *lx, const char *what, real *out)
+{
+	return read_scaled(lx, what, 0, out);
+}
+
+/* A length or a position: scaled by the scene's length scale. */
+static int read_length(lexer *lx, const char *what, real *out)
+{
+	return read_scaled(lx, what, lx->length_shift, out);
 }
 
 static int read_vec(lexer *lx, const char *what, vec3 *out)
@@ -179,11 +210,30 @@ static int read_vec(lexer *lx, const char *what, vec3 *out)
 	       read_number(lx, what, &out->z);
 }
 
+static int read_point(lexer *lx, const char *what, vec3 *out)
+{
+	return read_length(lx, what, &out->x) && read_length(lx, what, &out->y) &&
+	       read_length(lx, what, &out->z);
+}
+
+/* Reads a number that must not be negative; `name` names it ("material Kd"). Checked
+ * while lx->tok still holds it, so the message shows the token at its own line (a
+ * look-ahead or the next number would move the current token on). */
+static int read_nonnegative(lexer *lx, const char *what, const char *name, real *out)
+{
+	if (!read_number(lx, what, out))
+		return 0;
+	if (*out < REAL_C(0.0))
+		return fail(lx, lx->tok_line, "%s must not be negative, got %s", name, lx->tok);
+	return 1;
+}
+
 /* Reads a whole number in [lo, hi]; `limit` names the capacity macro behind hi, if any. */
 static int read_count(lexer *lx, const char *what, long lo, long hi, const char *limit,
 		      long *out)
 {
 	char *end;
+	*out = 0; /* defined even on failure, as in read_number */
 	if (!next_token(lx)) {
 		if (lx->failed)
 			return 0;
@@ -216,28 +266,42 @@ typedef struct {
 	int light_has_color[RT_MAX_LIGHTS];
 } parser;
 
-static int capacity_error(parser *p, const char *what, const char *limit)
+/* Reported at the line of the entity that does not fit, naming the macro and its value. */
+static int capacity_error(parser *p, int line, const char *what, const char *limit, long value)
 {
-	return fail(&p->lx, p->lx.tok_line, "too many %s: the limit is %s (raise it in src/config.h)",
-		    what, limit);
+	return fail(&p->lx, line,
+		    "too many %s: the limit is %s = %ld (raise it in src/config.h)", what, limit,
+		    value);
 }
 
-/* Index of material m, adding it unless an identical one exists. */
-static int intern_material(parser *p, const material *m)
+static int same_vec(vec3 a, vec3 b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+
+/* Field by field, not memcmp: a struct's padding bytes are unspecified after assignment. */
+static int same_material(const material *a, const material *b)
+{
+	return same_vec(a->color, b->color) && a->kd == b->kd && a->ks == b->ks &&
+	       a->shine == b->shine && a->kt == b->kt && a->ior == b->ior &&
+	       same_vec(a->absorb, b->absorb);
+}
+
+/* Index of material m, adding it unless an identical one exists; `line` is its entity's. */
+static int intern_material(parser *p, const material *m, int line)
 {
 	scene *s = p->s;
 	int i;
 	for (i = 0; i < s->material_count; i++)
-		if (memcmp(&s->materials[i], m, sizeof *m) == 0)
+		if (same_material(&s->materials[i], m))
 			return i;
 	if (s->material_count == RT_MAX_MATERIALS)
-		return capacity_error(p, "materials", "RT_MAX_MATERIALS"), -1;
+		return capacity_error(p, line, "materials", "RT_MAX_MATERIALS", RT_MAX_MATERIALS),
+		       -1;
 	s->materials[s->material_count] = *m;
 	return s->material_count++;
 }
 
-/* A new object slot with the current material (white diffuse before any `f`). */
-static object *new_object(parser *p, unsigned char kind)
+/* A new object slot with the current material (white diffuse before any `f`), for the
+ * entity on `line`. */
+static object *new_object(parser *p, unsigned char kind, int line)
 {
 	scene *s = p->s;
 	object *o;
@@ -247,19 +311,19 @@ static object *new_object(parser *p, unsigned char kind)
 		white.color = vec_make(REAL_C(1.0), REAL_C(1.0), REAL_C(1.0));
 		white.kd = REAL_C(1.0);
 		white.ior = REAL_C(1.0);
-		p->material = intern_material(p, &white);
+		p->material = intern_material(p, &white, line);
 		if (p->material < 0)
 			return NULL;
 	}
 	if (s->object_count == RT_MAX_OBJECTS) {
-		capacity_error(p, "objects", "RT_MAX_OBJECTS");
+		capacity_error(p, line, "objects", "RT_MAX_OBJECTS", RT_MAX_OBJECTS);
 		return NULL;
 	}
 	o = &s->objects[s->object_count];
 	memset(o, 0, sizeof *o);
 	o->kind = kind;
 	o->material = (unsigned short)p->material;
-	o->line = p->lx.tok_line;
+	o->line = line;
 	/* Opaque polygons are one-sided (NFF); closed solids, cones, patches and anything
 	 * that transmits are seen from both sides. */
 	if (!(kind == SHAPE_POLYGON && s->materials[p->material].kt <= REAL_C(0.0)))
@@ -282,19 +346,22 @@ static int parse_view(parser *p)
 	int k;
 	p->view_line = p->lx.tok_line;
 	for (k = 0; k < 6; k++) {
-		if (!next_token(&p->lx) || strcmp(p->lx.tok, keys[k]) != 0) {
+		if (!next_token(&p->lx)) {
 			if (p->lx.failed)
 				return 0;
-			return fail(&p->lx, p->lx.tok_line, "view: expected '%s', got '%s'", keys[k],
-				    p->lx.have_tok ? p->lx.tok : "end of file");
+			return fail(&p->lx, p->lx.tok_line,
+				    "view: unexpected end of file (expected '%s')", keys[k]);
 		}
+		if (strcmp(p->lx.tok, keys[k]) != 0)
+			return fail(&p->lx, p->lx.tok_line, "view: expected '%s', got '%s'", keys[k],
+				    p->lx.tok);
 		switch (k) {
 		case 0:
-			if (!read_vec(&p->lx, "a number (view from)", &v->from))
+			if (!read_point(&p->lx, "a number (view from)", &v->from))
 				return 0;
 			break;
 		case 1:
-			if (!read_vec(&p->lx, "a number (view at)", &v->at))
+			if (!read_point(&p->lx, "a number (view at)", &v->at))
 				return 0;
 			break;
 		case 2:
@@ -310,7 +377,7 @@ static int parse_view(parser *p)
 					    p->lx.tok);
 			break;
 		case 4:
-			if (!read_number(&p->lx, "a number (view hither)", &v->hither))
+			if (!read_length(&p->lx, "a number (view hither)", &v->hither))
 				return 0;
 			break;
 		default:
@@ -341,14 +408,12 @@ static int parse_view(parser *p)
  * returns -1. NFF's optional light colour is told apart this way. */
 static int number_follows_on(parser *p, int line)
 {
-	char *end;
 	if (!next_token(&p->lx))
 		return p->lx.failed ? -1 : (push_back(&p->lx), 0);
 	push_back(&p->lx);
 	if (p->lx.tok_line != line)
 		return 0;
-	(void)real_parse(p->lx.tok, &end);
-	return end != p->lx.tok && *end == '\0';
+	return is_number(p->lx.tok);
 }
 
 static int parse_light(parser *p)
@@ -357,9 +422,9 @@ static int parse_light(parser *p)
 	int line = p->lx.tok_line;
 	light *l;
 	if (s->light_count == RT_MAX_LIGHTS)
-		return capacity_error(p, "lights", "RT_MAX_LIGHTS");
+		return capacity_error(p, line, "lights", "RT_MAX_LIGHTS", RT_MAX_LIGHTS);
 	l = &s->lights[s->light_count];
-	if (!read_vec(&p->lx, "a number (light position)", &l->position))
+	if (!read_point(&p->lx, "a number (light position)", &l->position))
 		return 0;
 	/* The colour is optional: present when a number follows on the same line. */
 	p->light_has_color[s->light_count] = number_follows_on(p, line);
@@ -376,22 +441,21 @@ static int parse_light(parser *p)
 
 static int parse_material(parser *p)
 {
+	static const char colour[] = "a number (material colour)";
+	lexer *lx = &p->lx;
+	int line = lx->tok_line, index;
 	material m;
-	int index;
-	/* intern_material compares whole structs with memcmp: clear the padding too (a long
-	 * double carries 6 bytes of it), or identical `f` lines may not share. */
 	memset(&m, 0, sizeof m);
-	if (!read_vec(&p->lx, "a number (material colour)", &m.color) ||
-	    !read_number(&p->lx, "a number (material Kd)", &m.kd) ||
-	    !read_number(&p->lx, "a number (material Ks)", &m.ks) ||
-	    !read_number(&p->lx, "a number (material Shine)", &m.shine) ||
-	    !read_number(&p->lx, "a number (material T)", &m.kt) ||
-	    !read_number(&p->lx, "a number (material index of refraction)", &m.ior))
+	/* Each value is checked as it is read, so a negative one is named at its token. */
+	if (!read_nonnegative(lx, colour, "material colour", &m.color.x) ||
+	    !read_nonnegative(lx, colour, "material colour", &m.color.y) ||
+	    !read_nonnegative(lx, colour, "material colour", &m.color.z) ||
+	    !read_nonnegative(lx, "a number (material Kd)", "material Kd", &m.kd) ||
+	    !read_nonnegative(lx, "a number (material Ks)", "material Ks", &m.ks) ||
+	    !read_nonnegative(lx, "a number (material Shine)", "material Shine", &m.shine) ||
+	    !read_nonnegative(lx, "a number (material T)", "material T", &m.kt) ||
+	    !read_number(lx, "a number (material index of refraction)", &m.ior))
 		return 0;
-	if (m.kd < 0 || m.ks < 0 || m.kt < 0 || m.shine < 0 || m.color.x < 0 || m.color.y < 0 ||
-	    m.color.z < 0)
-		return fail(&p->lx, p->lx.tok_line,
-			    "material: colour, Kd, Ks, Shine and T must not be negative");
 	if (m.kt > REAL_C(0.0) && !(m.ior > REAL_C(0.0)))
 		return fail(&p->lx, p->lx.tok_line,
 			    "material: a transmitting material (T > 0) needs an index of refraction "
@@ -403,7 +467,7 @@ static int parse_material(parser *p)
 	m.color = image_srgb_to_linear(m.color);
 	m.absorb = p->absorb;
 	p->absorb = vec_make(REAL_C(0.0), REAL_C(0.0), REAL_C(0.0));
-	index = intern_material(p, &m);
+	index = intern_material(p, &m, line);
 	if (index < 0)
 		return 0;
 	p->material = index;
@@ -416,17 +480,16 @@ static int parse_sphere(parser *p)
 	vec3 center;
 	real radius;
 	object *o;
-	if (!read_vec(&p->lx, "a number (sphere centre)", &center) ||
-	    !read_number(&p->lx, "a number (sphere radius)", &radius))
+	if (!read_point(&p->lx, "a number (sphere centre)", &center) ||
+	    !read_length(&p->lx, "a number (sphere radius)", &radius))
 		return 0;
 	if (radius == REAL_C(0.0)) {
 		warn(p, line, "sphere with radius 0");
 		return 1;
 	}
-	o = new_object(p, SHAPE_SPHERE);
+	o = new_object(p, SHAPE_SPHERE, line);
 	if (!o)
 		return 0;
-	o->line = line;
 	/* NFF: a negative radius shows only the inside. */
 	if (radius < REAL_C(0.0)) {
 		o->flags |= OBJ_INSIDE_ONLY;
@@ -434,23 +497,45 @@ static int parse_sphere(parser *p)
 	}
 	o->u.sphere.center = center;
 	o->u.sphere.radius = radius;
-	o->u.sphere.radius2 = real_mul(radius, radius);
+	o->u.sphere.radius2 = real_mul2(radius, radius);
 	p->s->object_count++;
 	return 1;
 }
 
 /* Newell's normal (twice the vector area) of vertices[0..count). */
+/* Newell's normal of vertices[0..count), as a unit vector; the zero vector when the
+ * polygon has no area. Its components are areas (products of lengths), summed as real2
+ * and brought back to size by the largest before normalising. */
 static vec3 newell_normal(const vec3 *v, int count)
 {
-	vec3 n = vec_make(REAL_C(0.0), REAL_C(0.0), REAL_C(0.0));
+	real2 nx = 0, ny = 0, nz = 0, largest;
 	int i;
 	for (i = 0; i < count; i++) {
 		vec3 a = v[i], b = v[i + 1 == count ? 0 : i + 1];
-		n.x += real_mul(a.y - b.y, a.z + b.z);
-		n.y += real_mul(a.z - b.z, a.x + b.x);
-		n.z += real_mul(a.x - b.x, a.y + b.y);
+		nx += real_mul2(a.y - b.y, a.z + b.z);
+		ny += real_mul2(a.z - b.z, a.x + b.x);
+		nz += real_mul2(a.x - b.x, a.y + b.y);
 	}
-	return n;
+	largest = real_max(real_max(nx < 0 ? -nx : nx, ny < 0 ? -ny : ny), nz < 0 ? -nz : nz);
+	if (!(largest > 0))
+		return vec_make(REAL_C(0.0), REAL_C(0.0), REAL_C(0.0));
+	return vec_normalize(vec_make(real2_ratio(nx, largest), real2_ratio(ny, largest),
+				      real2_ratio(nz, largest)));
+}
+
+/* The mean of vertices[0..count), summed as real2 so that many large coordinates cannot
+ * overflow fixed point. */
+static vec3 centroid_of(const vec3 *v, int count)
+{
+	real2 sx = 0, sy = 0, sz = 0;
+	real n = real_from_int(count);
+	int i;
+	for (i = 0; i < count; i++) {
+		sx += real2_from(v[i].x);
+		sy += real2_from(v[i].y);
+		sz += real2_from(v[i].z);
+	}
+	return vec_make(real2_div(sx, n), real2_div(sy, n), real2_div(sz, n));
 }
 
 /* `p n` or `pp n` followed by n vertices (pp: each with its normal). */
@@ -460,7 +545,6 @@ static int parse_polygon(parser *p, int patch)
 	int line = p->lx.tok_line, i, first = s->vertex_count;
 	long count;
 	vec3 normal, centroid;
-	real length;
 	polygon_shape *poly;
 	object *o;
 
@@ -468,31 +552,27 @@ static int parse_polygon(parser *p, int patch)
 			RT_MAX_POLY_VERTS, "RT_MAX_POLY_VERTS", &count))
 		return 0;
 	if (count > RT_MAX_VERTICES - s->vertex_count)
-		return capacity_error(p, "polygon vertices in the scene", "RT_MAX_VERTICES");
+		return capacity_error(p, line, "polygon vertices in the scene", "RT_MAX_VERTICES",
+				      RT_MAX_VERTICES);
 	for (i = 0; i < count; i++) {
-		if (!read_vec(&p->lx, patch ? "a number (patch vertex)" : "a number (polygon vertex)",
+		if (!read_point(&p->lx, patch ? "a number (patch vertex)" : "a number (polygon vertex)",
 			      &s->vertices[first + i]))
 			return 0;
 		if (patch && !read_vec(&p->lx, "a number (patch vertex normal)", &s->normals[first + i]))
 			return 0;
 	}
 	normal = newell_normal(s->vertices + first, (int)count);
-	length = vec_length(normal);
-	if (!(length > REAL_C(0.0)) || !real_isfinite(length)) {
+	if (!(vec_dot(normal, normal) > REAL_C(0.0))) {
 		warn(p, line, patch ? "patch with zero area" : "polygon with zero area");
 		return 1;
 	}
-	o = new_object(p, patch ? SHAPE_PATCH : SHAPE_POLYGON);
+	o = new_object(p, patch ? SHAPE_PATCH : SHAPE_POLYGON, line);
 	if (!o)
 		return 0;
-	o->line = line;
 	poly = &o->u.polygon;
-	poly->normal = vec_scale(normal, real_div(REAL_C(1.0), length));
+	poly->normal = normal;
 	/* The plane passes through the centroid: the best fit for slightly non-planar input. */
-	centroid = vec_make(REAL_C(0.0), REAL_C(0.0), REAL_C(0.0));
-	for (i = 0; i < count; i++)
-		centroid = vec_add(centroid, s->vertices[first + i]);
-	centroid = vec_scale(centroid, real_div(REAL_C(1.0), real_from_int(count)));
+	centroid = centroid_of(s->vertices + first, (int)count);
 	poly->offset = vec_dot(poly->normal, centroid);
 	poly->first = first;
 	poly->count = (int)count;
@@ -520,10 +600,10 @@ static int parse_cone(parser *p)
 	real base_radius, apex_radius, length;
 	unsigned char inside_only = 0;
 	object *o;
-	if (!read_vec(&p->lx, "a number (cone base centre)", &base) ||
-	    !read_number(&p->lx, "a number (cone base radius)", &base_radius) ||
-	    !read_vec(&p->lx, "a number (cone apex centre)", &apex) ||
-	    !read_number(&p->lx, "a number (cone apex radius)", &apex_radius))
+	if (!read_point(&p->lx, "a number (cone base centre)", &base) ||
+	    !read_length(&p->lx, "a number (cone base radius)", &base_radius) ||
+	    !read_point(&p->lx, "a number (cone apex centre)", &apex) ||
+	    !read_length(&p->lx, "a number (cone apex radius)", &apex_radius))
 		return 0;
 	/* NFF: both radii negative shows only the inside. */
 	if (base_radius < REAL_C(0.0) && apex_radius <= REAL_C(0.0)) {
@@ -531,7 +611,12 @@ static int parse_cone(parser *p)
 		base_radius = -base_radius;
 		apex_radius = -apex_radius;
 	} else if (base_radius < REAL_C(0.0) || apex_radius < REAL_C(0.0)) {
-		return fail(&p->lx, line, "cone: both radii must have the same sign");
+		/* The apex radius, read last, is still the current token: show it as written
+		 * (whatever the number type). */
+		return fail(&p->lx, line,
+			    "cone: both radii must have the same sign, got base radius %s 0 and "
+			    "apex radius %s",
+			    base_radius < REAL_C(0.0) ? "<" : ">=", p->lx.tok);
 	}
 	axis = vec_sub(apex, base);
 	length = vec_length(axis);
@@ -543,10 +628,9 @@ static int parse_cone(parser *p)
 		warn(p, line, "cone with both radii 0");
 		return 1;
 	}
-	o = new_object(p, SHAPE_CONE);
+	o = new_object(p, SHAPE_CONE, line);
 	if (!o)
 		return 0;
-	o->line = line;
 	o->flags |= inside_only;
 	o->u.cone.base = base;
 	o->u.cone.axis = vec_scale(axis, real_div(REAL_C(1.0), length));
@@ -558,15 +642,17 @@ static int parse_cone(parser *p)
 	return 1;
 }
 
-/* Adds the half-space n.x <= d to the plane pool, normalised. */
-static int add_halfspace(parser *p, vec3 n, real d)
+/* Adds the half-space n.x <= d to the plane pool, normalised; `line` is the entity's
+ * (a capacity error names it; a zero normal is reported at its own row). */
+static int add_halfspace(parser *p, vec3 n, real d, int line)
 {
 	scene *s = p->s;
 	real length = vec_length(n);
 	if (!(length > REAL_C(0.0)))
 		return fail(&p->lx, p->lx.tok_line, "polyhedron: a plane normal is zero");
 	if (s->plane_count == RT_MAX_PLANES)
-		return capacity_error(p, "polyhedron planes in the scene", "RT_MAX_PLANES");
+		return capacity_error(p, line, "polyhedron planes in the scene", "RT_MAX_PLANES",
+				      RT_MAX_PLANES);
 	s->planes[s->plane_count].normal = vec_scale(n, real_div(REAL_C(1.0), length));
 	s->planes[s->plane_count].offset = real_div(d, length);
 	s->plane_count++;
@@ -586,14 +672,13 @@ static int parse_hedron(parser *p)
 		vec3 n;
 		real d;
 		if (!read_vec(&p->lx, "a number (polyhedron plane normal)", &n) ||
-		    !read_number(&p->lx, "a number (polyhedron plane offset)", &d) ||
-		    !add_halfspace(p, n, d))
+		    !read_length(&p->lx, "a number (polyhedron plane offset)", &d) ||
+		    !add_halfspace(p, n, d, line))
 			return 0;
 	}
-	o = new_object(p, SHAPE_HEDRON);
+	o = new_object(p, SHAPE_HEDRON, line);
 	if (!o)
 		return 0;
-	o->line = line;
 	o->u.hedron.first = first;
 	o->u.hedron.count = (int)count;
 	p->s->object_count++;
@@ -606,8 +691,8 @@ static int parse_box(parser *p)
 	int line = p->lx.tok_line, first = p->s->plane_count, axis;
 	vec3 a, b;
 	object *o;
-	if (!read_vec(&p->lx, "a number (box corner)", &a) ||
-	    !read_vec(&p->lx, "a number (box corner)", &b))
+	if (!read_point(&p->lx, "a number (box corner)", &a) ||
+	    !read_point(&p->lx, "a number (box corner)", &b))
 		return 0;
 	if (a.x == b.x || a.y == b.y || a.z == b.z) {
 		warn(p, line, "box with zero thickness");
@@ -619,13 +704,12 @@ static int parse_box(parser *p)
 		vec3 n = vec_make(axis == 0 ? REAL_C(1.0) : REAL_C(0.0),
 				  axis == 1 ? REAL_C(1.0) : REAL_C(0.0),
 				  axis == 2 ? REAL_C(1.0) : REAL_C(0.0));
-		if (!add_halfspace(p, n, hi) || !add_halfspace(p, vec_neg(n), -lo))
+		if (!add_halfspace(p, n, hi, line) || !add_halfspace(p, vec_neg(n), -lo, line))
 			return 0;
 	}
-	o = new_object(p, SHAPE_HEDRON);
+	o = new_object(p, SHAPE_HEDRON, line);
 	if (!o)
 		return 0;
-	o->line = line;
 	o->u.hedron.first = first;
 	o->u.hedron.count = 6;
 	p->s->object_count++;
@@ -638,30 +722,29 @@ static int parse_plane(parser *p)
 	int line = p->lx.tok_line;
 	vec3 point, normal;
 	object *o;
-	if (!read_vec(&p->lx, "a number (plane point)", &point) ||
+	if (!read_point(&p->lx, "a number (plane point)", &point) ||
 	    !read_vec(&p->lx, "a number (plane normal)", &normal))
 		return 0;
 	if (!(vec_dot(normal, normal) > REAL_C(0.0)))
 		return fail(&p->lx, line, "plane: the normal is zero");
-	o = new_object(p, SHAPE_PLANE);
+	o = new_object(p, SHAPE_PLANE, line);
 	if (!o)
 		return 0;
-	o->line = line;
 	o->u.plane.normal = vec_normalize(normal);
 	o->u.plane.offset = vec_dot(o->u.plane.normal, point);
 	p->s->object_count++;
 	return 1;
 }
 
-/* One absorption coefficient, checked while lx.tok still holds it: the look-ahead for
- * more numbers moves the current token on (to the next line, or to end of file). */
+/* One absorption coefficient, checked before the look-ahead for more numbers moves the
+ * current token on (to the next line, or to end of file). */
 static int read_absorption(parser *p, real *out)
 {
-	if (!read_number(&p->lx, "a number (absorption coefficient)", out))
+	if (!read_nonnegative(&p->lx, "a number (absorption coefficient)",
+			      "absorption coefficient", out))
 		return 0;
-	if (*out < REAL_C(0.0))
-		return fail(&p->lx, p->lx.tok_line,
-			    "absorption coefficient must not be negative, got %s", p->lx.tok);
+	/* Per unit length: a scene scaled up by 2^shift absorbs 2^shift times less per unit. */
+	*out = real_ldexp(*out, -p->lx.length_shift);
 	return 1;
 }
 
@@ -746,13 +829,20 @@ static int parse_entity(parser *p)
 	if (strcmp(cmd, "ambient") == 0 || strcmp(cmd, "absorb") == 0 ||
 	    strcmp(cmd, "depth") == 0 || strcmp(cmd, "cutoff") == 0)
 		return parse_settings(p, cmd);
+	/* In a token stream an extra number is read as a command: say so. */
+	if (is_number(cmd))
+		return fail(&p->lx, p->lx.tok_line,
+			    "unknown command '%s' (a number where a command belongs: one number "
+			    "too many before it?)",
+			    cmd);
 	return fail(&p->lx, p->lx.tok_line, "unknown command '%s'", cmd);
 }
 
 /* Large: static, so the MCU's small stack never holds it. */
 static parser the_parser;
 
-int parse_scene(scene *s, const char *file, read_fn read, void *ctx)
+/* One pass over the input, reading lengths times 2^length_shift. */
+static int parse_pass(scene *s, const char *file, read_fn read, void *ctx, int length_shift)
 {
 	parser *p = &the_parser;
 	memset(p, 0, sizeof *p);
@@ -763,17 +853,24 @@ int parse_scene(scene *s, const char *file, read_fn read, void *ctx)
 	p->lx.ctx = ctx;
 	p->lx.file = file;
 	p->lx.line = 1;
+	p->lx.last_line = 1;
 	p->lx.pending = NO_BYTE;
 	p->lx.at_start = 1;
+	p->lx.length_shift = length_shift;
 	while (next_token(&p->lx))
 		if (!parse_entity(p))
 			return 0;
 	if (p->lx.failed)
 		return 0;
 	if (!p->view_line)
-		return fail(&p->lx, p->lx.line, "no view: a scene needs a 'v' entity");
+		return fail(&p->lx, p->lx.last_line, "no view: a scene needs a 'v' entity");
 	finish_lights(p);
 	return 1;
+}
+
+int parse_scene(scene *s, const char *file, read_fn read, void *ctx)
+{
+	return parse_pass(s, file, read, ctx, 0);
 }
 
 static int read_stdio(void *ctx)
@@ -782,7 +879,14 @@ static int read_stdio(void *ctx)
 	return c == EOF ? -1 : c;
 }
 
-int parse_scene_file(scene *s, const char *path)
+static void quiet(void *ctx, const char *message)
+{
+	(void)ctx;
+	(void)message;
+}
+
+/* Parses the file once at length scale 2^shift; messages go where diag sends them. */
+static int parse_file_pass(scene *s, const char *path, int shift)
 {
 	FILE *f = fopen(path, "rb");
 	int ok;
@@ -790,11 +894,42 @@ int parse_scene_file(scene *s, const char *path)
 		diag_error(path, 0, "cannot open: %s", strerror(errno));
 		return 0;
 	}
-	ok = parse_scene(s, path, read_stdio, f);
+	ok = parse_pass(s, path, read_stdio, f, shift);
 	if (ok && ferror(f)) {
 		diag_error(path, 0, "read error");
 		ok = 0;
 	}
 	fclose(f);
 	return ok;
+}
+
+int parse_scene_file(scene *s, const char *path)
+{
+	/* Floating point reads the file once. Fixed point reads it first at a coarse scale
+	 * that holds any coordinate, measures the scene, and reads it again at the scale
+	 * that fits its extent into Q16.16's range (REAL_FIRST_PASS_SHIFT, real_length_shift). */
+	int shift = REAL_FIRST_PASS_SHIFT, final_shift;
+	real extent, feature;
+	const char *why;
+	if (shift != 0) {
+		int ok;
+		diag_set_sink(quiet, NULL);
+		ok = parse_file_pass(s, path, shift);
+		diag_set_sink(NULL, NULL);
+		if (!ok)
+			return parse_file_pass(s, path, shift); /* again, to report the error */
+		scene_measure(s, &extent, &feature);
+		final_shift = real_length_shift(extent, shift);
+	} else {
+		final_shift = 0;
+	}
+	if (!parse_file_pass(s, path, final_shift))
+		return 0;
+	s->length_shift = final_shift;
+	scene_measure(s, &extent, &feature);
+	if (!real_can_represent(extent, feature, &why)) {
+		diag_error(path, 0, "cannot be rendered in %s: %s", REAL_NAME, why);
+		return 0;
+	}
+	return 1;
 }

@@ -40,7 +40,7 @@ int polygon_contains_2d(const vec2 *uv, int count, real pu, real pv)
 		 * double). */
 		{
 			real au = lo.u - pu, av = lo.v - pv, bu = hi.u - pu, bv = hi.v - pv;
-			if (real_mul(au, bv) >= real_mul(av, bu))
+			if (real_mul2(au, bv) >= real_mul2(av, bu))
 				inside = !inside;
 		}
 	}
@@ -58,10 +58,14 @@ int polygon_contains(const vec3 *vertices, int count, int axis, real pu, real pv
 	return polygon_contains_2d(uv, count, pu, pv);
 }
 
-/* Signed area weight of triangle (a, b, c) about the plane normal n. */
-static real area_along(vec3 n, vec3 a, vec3 b, vec3 c)
+/* Signed area weight of triangle (a, b, c) about the unit plane normal n: products of
+ * two lengths, so a real2. */
+static real2 area_along(vec3 n, vec3 a, vec3 b, vec3 c)
 {
-	return vec_dot(n, vec_cross(vec_sub(b, a), vec_sub(c, a)));
+	vec3 e = vec_sub(b, a), f = vec_sub(c, a);
+	return real2_scale(real_mul2(e.y, f.z) - real_mul2(e.z, f.y), n.x) +
+	       real2_scale(real_mul2(e.z, f.x) - real_mul2(e.x, f.z), n.y) +
+	       real2_scale(real_mul2(e.x, f.y) - real_mul2(e.y, f.x), n.z);
 }
 
 /* Shading normal of a patch at p: barycentric interpolation of the vertex normals in
@@ -72,15 +76,15 @@ static vec3 patch_normal(const scene *s, const polygon_shape *poly, vec3 p)
 	const vec3 *vn = s->normals + poly->first;
 	int i;
 	for (i = 1; i + 1 < poly->count; i++) {
-		real whole = area_along(poly->normal, v[0], v[i], v[i + 1]);
-		real w0 = area_along(poly->normal, p, v[i], v[i + 1]);
-		real w1 = area_along(poly->normal, v[0], p, v[i + 1]);
-		real w2 = whole - w0 - w1;
-		if (whole != REAL_C(0.0) && ((w0 >= 0 && w1 >= 0 && w2 >= 0) ||
-					      i + 2 == poly->count)) {
-			vec3 n = vec_scale(vn[0], w0);
-			n = vec_madd(n, w1, vn[i]);
-			n = vec_madd(n, w2, vn[i + 1]);
+		real2 whole = area_along(poly->normal, v[0], v[i], v[i + 1]);
+		real2 a0 = area_along(poly->normal, p, v[i], v[i + 1]);
+		real2 a1 = area_along(poly->normal, v[0], p, v[i + 1]);
+		real2 a2 = whole - a0 - a1;
+		if (whole != 0 && ((a0 >= 0 && a1 >= 0 && a2 >= 0) || i + 2 == poly->count)) {
+			/* Barycentric weights: each area over the whole. */
+			vec3 n = vec_scale(vn[0], real2_ratio(a0, whole));
+			n = vec_madd(n, real2_ratio(a1, whole), vn[i]);
+			n = vec_madd(n, real2_ratio(a2, whole), vn[i + 1]);
 			n = vec_normalize(n);
 			return vec_dot(n, n) > REAL_C(0.0) ? n : poly->normal;
 		}

@@ -1,16 +1,28 @@
 /* real.h - the one place that chooses rt's number type `real`.
  * Everything numeric goes through the names defined here, so one source builds as
- * float, double (default) or long double. See LICENSE for copyright and licence. */
+ * float, double (default), long double or Q16.16 fixed point (fixed.c).
+ * See LICENSE for copyright and licence. */
 #ifndef RT_REAL_H
 #define RT_REAL_H
 
+/* Pick one with -DRT_REAL_FLOAT, -DRT_REAL_DOUBLE, -DRT_REAL_LONG_DOUBLE or
+ * -DRT_REAL_FIXED. */
+#if !defined(RT_REAL_FLOAT) && !defined(RT_REAL_DOUBLE) && !defined(RT_REAL_LONG_DOUBLE) && \
+	!defined(RT_REAL_FIXED)
+#define RT_REAL_DOUBLE
+#endif
+
+#define REAL_TEXT_OK 0
+#define REAL_TEXT_NOT_A_NUMBER 1
+#define REAL_TEXT_NOT_FINITE 2   /* NaN, infinity, or too large for any type */
+#define REAL_TEXT_OUT_OF_RANGE 3 /* finite, but beyond what this build reads */
+
+#if defined(RT_REAL_FIXED)
+#include "fixed.h"
+#else
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
-
-/* Pick one with -DRT_REAL_FLOAT, -DRT_REAL_DOUBLE or -DRT_REAL_LONG_DOUBLE. */
-#if !defined(RT_REAL_FLOAT) && !defined(RT_REAL_DOUBLE) && !defined(RT_REAL_LONG_DOUBLE)
-#define RT_REAL_DOUBLE
 #endif
 
 /* Operations whose meaning changes with the type are named; + - < stay plain.
@@ -57,21 +69,105 @@ typedef long double real;
 #define real_tan tanl
 #define real_isfinite(x) isfinite(x)
 #define real_parse(s, end) strtold((s), (end))
+#elif defined(RT_REAL_FIXED)
+/* Q16.16 in an int32_t; every product and quotient goes through 64 bits (fixed.c). The
+ * scene is scaled at load so that it fits (scene_scale in the parser). */
+typedef int32_t real;
+typedef int64_t real2; /* Q32.32: squares and products of lengths */
+#define REAL_NAME "Q16.16 fixed point"
+#define REAL_FIXED 1
+#define REAL_C(x) ((real)((x) * 65536.0 + ((x) < 0 ? -0.5 : 0.5)))
+#define REAL_MAX ((real)0x7FFFFFFF)
+#define real_mul(a, b) fixed_mul((a), (b))
+#define real_div(a, b) fixed_div((a), (b))
+#define real_sqrt(a) fixed_sqrt(a)
+#define real_fabs(a) fixed_abs(a)
+#define real_pow(a, b) fixed_pow((a), (b))
+#define real_exp(a) fixed_exp(a)
+#define real_tan(a) fixed_tan(a)
+#define real_isfinite(x) ((void)(x), 1)
+#define real_from_int(i) fixed_from_int(i)
+#define real_to_int(x) ((x) >> 16)
+#define real_mul2(a, b) ((real2)(a) * (real2)(b))
+#define real2_from(a) ((real2)(a) * 65536)
+#define real2_sqrt(w) fixed_sqrt2(w)
+#define real2_div(w, b) fixed_div2((w), (b))
+#define real2_ratio(a, b) fixed_ratio2((a), (b))
+#define real2_scale(w, a) ((w) / 65536 * (a))
+/* Absolute precision: a hit point is good to a couple of LSB wherever it is. */
+#define real_surface_offset(scale) ((void)(scale), (real)8)
+#define real_from_text(text, shift, out) fixed_from_text((text), (shift), (out))
+#define REAL_RANGE_TEXT "the range of Q16.16 fixed point"
+#define real_ldexp(x, e) fixed_ldexp((x), (e))
+/* Pass 1 reads lengths at 2^-12 (up to 1.3e8 units) to find the scene's extent. */
+#define REAL_FIRST_PASS_SHIFT (-12)
+#define real_length_shift(extent, shift) fixed_length_shift((extent), (shift))
+#define real_can_represent(extent, feature, why) fixed_can_represent((extent), (feature), (why))
 #else
-#error "rt: choose one of RT_REAL_FLOAT, RT_REAL_DOUBLE, RT_REAL_LONG_DOUBLE"
+#error "rt: choose one of RT_REAL_FLOAT, RT_REAL_DOUBLE, RT_REAL_LONG_DOUBLE, RT_REAL_FIXED"
 #endif
 
+#if !defined(RT_REAL_FIXED)
+typedef real real2; /* floating point needs no wider type for squares */
+#define REAL_INPUT_LIMIT REAL_C(1e12)
+#define real_ldexp(x, e) real_ldexp_((x), (e))
+#define real_surface_offset(scale) real_mul(REAL_OFFSET, (scale))
+/* Reading numbers: real_from_text converts a whole token, times 2^shift (the scene's
+ * length scale, always 0 in floating point), and returns a REAL_TEXT_ status. */
+static inline int real_from_text(const char *text, int shift, real *out)
+{
+	char *end;
+	(void)shift;
+	*out = real_parse(text, &end);
+	if (end == text || *end != '\0')
+		return REAL_TEXT_NOT_A_NUMBER;
+	if (!real_isfinite(*out))
+		return REAL_TEXT_NOT_FINITE;
+	return real_fabs(*out) <= REAL_INPUT_LIMIT ? REAL_TEXT_OK : REAL_TEXT_OUT_OF_RANGE;
+}
+#define REAL_RANGE_TEXT "+-1e12"
+/* Floating point represents any scene within the input limit: no scaling (shift 0),
+ * and nothing is refused for its dynamic range. */
+#define REAL_FIRST_PASS_SHIFT 0
+#define real_length_shift(extent, shift) ((void)(extent), (void)(shift), 0)
+static inline int real_can_represent(real extent, real feature, const char **why)
+{
+	(void)extent;
+	(void)feature;
+	*why = 0;
+	return 1;
+}
+static inline real real_ldexp_(real x, int e)
+{
+	return e ? x * real_pow(REAL_C(2.0), (real)e) : x;
+}
+#define REAL_FIXED 0
 #define real_mul(a, b) ((a) * (b))
 #define real_div(a, b) ((a) / (b))
 #define real_from_int(i) ((real)(i))
-#define real_to_double(x) ((double)(x))
+#define real_to_int(x) ((int)(x))
+#define real_mul2(a, b) ((a) * (b))
+#define real2_from(a) (a)
+#define real2_sqrt(w) real_sqrt(w)
+#define real2_div(w, b) ((w) / (b))
+#define real2_ratio(a, b) ((a) / (b))
+#define real2_scale(w, a) ((w) * (a))
+#endif
+/* real2 is the type of squared lengths and products of two lengths (dot products of
+ * positions, areas, quadratic coefficients): real_mul2(a, b) is a * b as a real2,
+ * real2_from widens, real2_sqrt gives back a real length, real2_div(w, b) is w / b as a
+ * real, real2_ratio(a, b) is a / b as a real, real2_scale(w, a) is w * a for a unitless a. */
+
 #define real_min(a, b) ((a) < (b) ? (a) : (b))
 #define real_max(a, b) ((a) > (b) ? (a) : (b))
 
-/* Range budget (floating point): every number in a scene is at most REAL_INPUT_LIMIT in
- * magnitude, so squares and dot products of coordinates (1e24 at most) and the bounding
- * box arithmetic stay finite in every type. Double keeps hit points accurate to ~1e-10
- * relative; float is good to ~1e3 units from the origin (numerics.md section 1). */
-#define REAL_INPUT_LIMIT REAL_C(1e12)
+/* Range budget (floating point): every number in a scene is at most 1e12 in magnitude,
+ * so squares and dot products of coordinates (1e24 at most) and the bounding box
+ * arithmetic stay finite in every type. Double keeps hit points accurate to ~1e-10
+ * relative; float is good to ~1e3 units from the origin (numerics.md section 1).
+ * Range budget (Q16.16): the parser scales the scene so that every coordinate is within
+ * +-4096 (2^12); squares then reach 2^24 as real2 (Q32.32, up to 2^31), ray lengths
+ * across the scene stay below 2^14, and features must stay at least 2^-4 after scaling
+ * (their squares keep 8 bits), else the scene is refused. */
 
 #endif

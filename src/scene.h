@@ -38,7 +38,8 @@ enum shape_kind {
 
 typedef struct {
 	vec3 center;
-	real radius, radius2;
+	real radius;
+	real2 radius2; /* squared: real2, which fixed point keeps in 64 bits */
 } sphere_shape;
 
 /* A polygon's vertices are scene.vertices[first .. first+count); a patch's normals
@@ -110,6 +111,7 @@ typedef struct {
 
 typedef struct {
 	const char *file; /* scene file name, for messages */
+	int length_shift; /* lengths are stored times 2^length_shift (fixed point's scale) */
 	view camera;
 	vec3 background;
 	vec3 ambient;
@@ -137,5 +139,10 @@ typedef struct {
 
 /* Clears a scene to NFF's defaults (black background, no ambient, default depth). */
 void scene_init(scene *s, const char *file);
+
+/* The scene's extent (largest coordinate of any object, light or the camera, in
+ * magnitude) and its smallest feature (the smallest sphere or cone radius or cone
+ * length; REAL_MAX when there is none): what decides whether a number type can hold it. */
+void scene_measure(const scene *s, real *extent, real *feature);
 
 #endif

@@ -4,13 +4,13 @@
  * See LICENSE for copyright and licence. */
 #include "shape.h"
 
-int solve_quadratic(real a, real b, real c, real discriminant, real *t0, real *t1)
+int solve_quadratic(real a, real b, real2 c, real2 discriminant, real *t0, real *t1)
 {
 	real root, q;
 	/* `!(x >= 0)` also rejects NaN (numerics.md N01). */
-	if (!(discriminant >= REAL_C(0.0)))
+	if (!(discriminant >= 0))
 		return 0;
-	root = real_sqrt(discriminant);
+	root = real2_sqrt(discriminant);
 	q = b >= REAL_C(0.0) ? -(b + root) : root - b;
 	/* q = 0 only when b = 0 and the discriminant is 0: a tangent at the origin (S19). */
 	if (q == REAL_C(0.0)) {
@@ -19,7 +19,7 @@ int solve_quadratic(real a, real b, real c, real discriminant, real *t0, real *t
 		*t0 = *t1 = REAL_C(0.0);
 		return 2;
 	}
-	*t0 = real_div(c, q);
+	*t0 = real2_div(c, q);
 	/* a = 0 is the linear case (a ray parallel to a cylinder's axis): one root only. */
 	*t1 = a == REAL_C(0.0) ? *t0 : real_div(q, a);
 	if (*t1 < *t0) {
@@ -35,21 +35,22 @@ int sphere_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h
 	const sphere_shape *s = &o->u.sphere;
 	vec3 f = vec_sub(r->origin, s->center);
 	real b = vec_dot(f, r->dir);
-	real c = vec_dot(f, f) - s->radius2;
+	real2 c = vec_dot2(f, f) - s->radius2;
 	real t0, t1, t;
 #if RT_SPHERE_TEXTBOOK
 	/* The textbook form, for comparison only: b^2 - c cancels for small, distant or
 	 * grazing spheres, and -b +- sqrt cancels for huge ones (numerics.md section 1). */
-	real discriminant = real_mul(b, b) - c, root;
-	if (!(discriminant >= REAL_C(0.0)))
+	real2 discriminant = real_mul2(b, b) - c;
+	real root;
+	if (!(discriminant >= 0))
 		return 0;
-	root = real_sqrt(discriminant);
+	root = real2_sqrt(discriminant);
 	t0 = -b - root;
 	t1 = -b + root;
 #else
 	/* Perpendicular offset of the centre from the ray line: terms of size r^2, not |f|^2. */
 	vec3 v = vec_madd(f, -b, r->dir);
-	real discriminant = s->radius2 - vec_dot(v, v);
+	real2 discriminant = s->radius2 - vec_dot2(v, v);
 	if (!solve_quadratic(REAL_C(1.0), b, c, discriminant, &t0, &t1))
 		return 0;
 #endif

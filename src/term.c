@@ -17,14 +17,21 @@ int term_is_tty(int fd)
 	return isatty(fd);
 }
 
+/* At most RT_MAX_WIDTH, the widest preview. COLUMNS comes from outside: it counts only
+ * as a whole number in 1..RT_MAX_WIDTH (atoi would overflow on a long one, and a wider
+ * value made the preview fail with a misleading write error). */
 int term_columns(void)
 {
 	struct winsize ws;
 	const char *columns = getenv("COLUMNS");
 	if (isatty(1) && ioctl(1, TIOCGWINSZ, &ws) == 0 && ws.ws_col > 0)
-		return ws.ws_col;
-	if (columns && atoi(columns) > 0)
-		return atoi(columns);
+		return ws.ws_col < RT_MAX_WIDTH ? ws.ws_col : RT_MAX_WIDTH;
+	if (columns) {
+		char *end;
+		long n = strtol(columns, &end, 10);
+		if (end != columns && *end == '\0' && n > 0 && n <= RT_MAX_WIDTH)
+			return (int)n;
+	}
 	return 80;
 }
 
@@ -39,18 +46,18 @@ enum preview_mode term_color_mode(void)
 	return PREVIEW_ANSI_256;
 }
 
-double term_now(void)
+unsigned long long term_micros(void)
 {
 	struct timespec ts;
 	clock_gettime(CLOCK_MONOTONIC, &ts);
-	return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
+	return (unsigned long long)ts.tv_sec * 1000000u + (unsigned long long)ts.tv_nsec / 1000u;
 }
 
 void progress_start(progress_bar *p, int enabled, const trace_stats *stats)
 {
 	p->enabled = enabled;
-	p->start = term_now();
-	p->last_draw = 0.0;
+	p->start = term_micros();
+	p->last_draw = 0;
 	p->stats = stats;
 	p->drawn = 0;
 }
@@ -59,25 +66,25 @@ void progress_update(void *ctx, int done, int total)
 {
 	progress_bar *p = ctx;
 	const trace_stats *st = p->stats;
-	double now, elapsed, left, rays;
+	unsigned long long now, elapsed, left, rays;
 	int filled, i;
 	char bar[32];
 	if (!p->enabled)
 		return;
-	now = term_now();
+	now = term_micros();
 	elapsed = now - p->start;
-	left = elapsed / done * (total - done);
+	left = elapsed / (unsigned)done * (unsigned)(total - done);
 	/* Quiet for quick renders; a few redraws a second for the rest. */
-	if (elapsed < 0.5 || elapsed + left < 1.0 || now - p->last_draw < 0.1)
+	if (elapsed < 500000u || elapsed + left < 1000000u || now - p->last_draw < 100000u)
 		return;
 	p->last_draw = now;
 	filled = (int)((long)done * 30 / total);
 	for (i = 0; i < 30; i++)
 		bar[i] = i < filled ? '#' : '.';
 	bar[30] = '\0';
-	rays = (double)(st->eye_rays + st->shadow_rays + st->reflect_rays + st->refract_rays);
-	fprintf(stderr, "\r[%s] %d/%d rows  %.2f Mrays/s  %.0f s left \033[K", bar, done, total,
-		rays / elapsed * 1e-6, left + 0.5);
+	rays = st->eye_rays + st->shadow_rays + st->reflect_rays + st->refract_rays;
+	fprintf(stderr, "\r[%s] %d/%d rows  %llu.%02llu Mrays/s  %llu s left \033[K", bar, done,
+		total, rays / elapsed, rays * 100u / elapsed % 100u, (left + 500000u) / 1000000u);
 	fflush(stderr);
 	p->drawn = 1;
 }

@@ -20,7 +20,7 @@ enum preview_mode term_color_mode(void);
  * taking more than about a second; redrawn at most ten times a second, erased at the end. */
 typedef struct {
 	int enabled;
-	double start, last_draw;
+	unsigned long long start, last_draw; /* microseconds */
 	const trace_stats *stats; /* live ray counts, for rays/s */
 	int drawn;
 } progress_bar;
@@ -29,7 +29,7 @@ void progress_start(progress_bar *p, int enabled, const trace_stats *stats);
 void progress_update(void *ctx, int done, int total); /* a progress_fn; ctx is the bar */
 void progress_finish(progress_bar *p);
 
-/* Seconds on a monotonic clock. */
-double term_now(void);
+/* Microseconds on a monotonic clock (integers: the fixed-point build has no floats). */
+unsigned long long term_micros(void);
 
 #endif

@@ -58,7 +58,7 @@ vec3 trace_offset(vec3 p, vec3 side, real t)
 	return vec_madd(p, REAL_C(1e-4), side);
 #else
 	real scale = real_max(REAL_C(1.0), real_max(vec_max_abs(p), real_fabs(t)));
-	return vec_madd(p, real_mul(REAL_OFFSET, scale), side);
+	return vec_madd(p, real_surface_offset(scale), side);
 #endif
 }
 

@@ -52,7 +52,13 @@ static inline vec3 vec_cross(vec3 a, vec3 b)
 			real_mul(a.x, b.y) - real_mul(a.y, b.x));
 }
 
-static inline real vec_length(vec3 a) { return real_sqrt(vec_dot(a, a)); }
+/* a . b as a real2: for positions, whose products need the wider type in fixed point. */
+static inline real2 vec_dot2(vec3 a, vec3 b)
+{
+	return real_mul2(a.x, b.x) + real_mul2(a.y, b.y) + real_mul2(a.z, b.z);
+}
+
+static inline real vec_length(vec3 a) { return real2_sqrt(vec_dot2(a, a)); }
 
 /* Unit vector along a; the zero vector stays zero (callers reject it first). */
 static inline vec3 vec_normalize(vec3 a)

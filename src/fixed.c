@@ -1,0 +1,287 @@
+/* fixed.c - the Q16.16 build's square roots, exponentials, tangent and number parsing,
+ * in integer arithmetic only (the fixed build compiles with -mgeneral-regs-only).
+ * Series run in Q4.28 or Q2.30 inside int64, so their rounding stays below 1 LSB of the
+ * Q16.16 result. See LICENSE for copyright and licence. */
+#include "fixed.h"
+
+/* Only the fixed build uses this file; other builds compile it to nothing. */
+#if defined(RT_REAL_FIXED)
+
+#include <stdio.h>
+
+uint64_t fixed_isqrt64(uint64_t x)
+{
+	uint64_t r = 0, bit = (uint64_t)1 << 62;
+	while (bit > x)
+		bit >>= 2;
+	/* Digit by digit: r becomes floor(sqrt(x)) and x the remainder x - r^2. */
+	while (bit) {
+		if (x >= r + bit) {
+			x -= r + bit;
+			r = (r >> 1) + bit;
+		} else {
+			r >>= 1;
+		}
+		bit >>= 2;
+	}
+	/* Round: sqrt(n) >= r + 1/2 exactly when n - r^2 > r (numerics.md Q03). */
+	return x > r ? r + 1 : r;
+}
+
+int32_t fixed_sqrt(int32_t a)
+{
+	return a <= 0 ? 0 : fixed_saturate((int64_t)fixed_isqrt64((uint64_t)a << 16));
+}
+
+int32_t fixed_sqrt2(int64_t w)
+{
+	return w <= 0 ? 0 : fixed_saturate((int64_t)fixed_isqrt64((uint64_t)w));
+}
+
+int32_t fixed_ratio2(int64_t a, int64_t b)
+{
+	int negative = (a < 0) != (b < 0);
+	int64_t q;
+	a = a < 0 ? -a : a;
+	b = b < 0 ? -b : b;
+	/* Keep a * 65536 within 63 bits; the ratio loses nothing that Q16.16 could show. */
+	while (a > ((int64_t)1 << 46)) {
+		a >>= 1;
+		b >>= 1;
+	}
+	if (b == 0)
+		return negative ? -FIXED_MAX : FIXED_MAX;
+	q = (a * 65536 + b / 2) / b;
+	return fixed_saturate(negative ? -q : q);
+}
+
+/* 2^y for y in Q16.16, as Q16.16: 2^k by shifting, 2^f for the fraction f by the
+ * Taylor series of e^(f ln 2) in Q2.30 (error below 1e-7 for f < 1). */
+static int32_t exp2_fixed(int64_t y)
+{
+	static const int64_t inverse_factorial[] = {
+		1073741824, 1073741824, 536870912, 178956971, 44739243, 8947849, 1491308, 213044, 26631,
+	}; /* 1/k! in Q2.30, k = 0..8 */
+	const int64_t ln2 = 744261118; /* ln 2 in Q2.30 */
+	int64_t k, f, u, sum;
+	int i;
+	if (y >= (int64_t)15 * 65536)
+		return FIXED_MAX;
+	if (y < (int64_t)-17 * 65536)
+		return 0;
+	k = y >> 16;                /* floor */
+	f = y - k * 65536;          /* [0, 1) in Q16.16 */
+	u = (f << 14) * ln2 >> 30;  /* f ln 2 in Q2.30 */
+	sum = inverse_factorial[8];
+	for (i = 7; i >= 0; i--)
+		sum = (sum * u >> 30) + inverse_factorial[i];
+	/* sum = 2^f in Q2.30; to Q16.16 and times 2^k, rounding. */
+	if (k >= 0)
+		return fixed_saturate(((sum >> 13) + 1) >> 1 << k);
+	k = 14 - k; /* total right shift */
+	return k >= 62 ? 0 : (int32_t)((sum + ((int64_t)1 << (k - 1))) >> k);
+}
+
+int32_t fixed_exp(int32_t x)
+{
+	const int64_t log2e = 1549082005; /* log2(e) in Q2.30 */
+	return exp2_fixed((int64_t)x * log2e >> 30);
+}
+
+/* log2 x for x > 0 (Q16.16), in Q8.24: the integer part from the top bit, then one
+ * fraction bit per squaring of the mantissa (in Q2.30). 24 bits keep x^y good to a few
+ * LSB even for Phong exponents in the hundreds. */
+static int64_t log2_fixed(int32_t x)
+{
+	int top = 30, i;
+	int64_t m, result;
+	while (top > 0 && !(x & ((int32_t)1 << top)))
+		top--; /* x in [2^top, 2^(top+1)) */
+	m = (int64_t)x << (30 - top);
+	result = (int64_t)(top - 16) << 24;
+	for (i = 23; i >= 0; i--) {
+		m = m * m >> 30;
+		if (m >= ((int64_t)2 << 30)) {
+			m >>= 1;
+			result += (int64_t)1 << i;
+		}
+	}
+	return result;
+}
+
+int32_t fixed_pow(int32_t x, int32_t y)
+{
+	int64_t e;
+	if (y == 0)
+		return FIXED_ONE;
+	if (x <= 0)
+		return 0;
+	/* y log2 x in Q16.16; log2 x (Q8.24, at most 15 in size) times y fits 64 bits. */
+	e = log2_fixed(x) * y >> 24;
+	return exp2_fixed(e);
+}
+
+int32_t fixed_tan(int32_t x)
+{
+	/* sin and cos by their nested Taylor series in Q4.28 (x^2 reaches 2.47 at pi/2). */
+	int64_t t = (int64_t)x << 12, t2 = t * t >> 28, s = (int64_t)1 << 28, c = (int64_t)1 << 28;
+	int k;
+	for (k = 15; k >= 3; k -= 2)
+		s = ((int64_t)1 << 28) - (t2 * s >> 28) / ((int64_t)k * (k - 1));
+	s = t * s >> 28;
+	for (k = 16; k >= 2; k -= 2)
+		c = ((int64_t)1 << 28) - (t2 * c >> 28) / ((int64_t)k * (k - 1));
+	if (c <= 0)
+		return FIXED_MAX;
+	return fixed_saturate(fixed_round_div(s * 65536, c));
+}
+
+int32_t fixed_parse(const char *s, char **end, int shift, int *overflow)
+{
+	const char *p = s;
+	uint64_t mantissa = 0;
+	int64_t result, denominator = 1;
+	int negative = 0, digits = 0, exponent = 0, binary = 16 + shift;
+	*overflow = 0;
+	if (*p == '+' || *p == '-')
+		negative = *p++ == '-';
+	/* Up to 18 significant digits; later ones only move the decimal point. */
+	for (; *p >= '0' && *p <= '9'; p++, digits++) {
+		if (mantissa < 100000000000000000ULL)
+			mantissa = mantissa * 10 + (uint64_t)(*p - '0');
+		else
+			exponent++;
+	}
+	if (*p == '.') {
+		for (p++; *p >= '0' && *p <= '9'; p++, digits++) {
+			if (mantissa < 100000000000000000ULL) {
+				mantissa = mantissa * 10 + (uint64_t)(*p - '0');
+				exponent--;
+			}
+		}
+	}
+	if (!digits) {
+		*end = (char *)(uintptr_t)s;
+		return 0;
+	}
+	if (*p == 'e' || *p == 'E') {
+		const char *q = p + 1;
+		int e = 0, e_negative = 0;
+		if (*q == '+' || *q == '-')
+			e_negative = *q++ == '-';
+		if (*q >= '0' && *q <= '9') {
+			for (; *q >= '0' && *q <= '9'; q++)
+				e = e < 10000 ? e * 10 + (*q - '0') : e;
+			exponent += e_negative ? -e : e;
+			p = q;
+		}
+	}
+	*end = (char *)(uintptr_t)p;
+	if (mantissa == 0)
+		return 0;
+	/* value = mantissa * 10^exponent * 2^binary, kept within 63 bits throughout. */
+	for (; exponent > 0; exponent--) {
+		if (mantissa > UINT64_MAX / 20) {
+			*overflow = 1;
+			return 0;
+		}
+		mantissa *= 10;
+	}
+	while (exponent < -18 || (binary > 0 && mantissa >= ((uint64_t)1 << (62 - binary)))) {
+		mantissa = (mantissa + 5) / 10;
+		exponent++;
+	}
+	for (; exponent < 0; exponent++)
+		denominator *= 10;
+	if (binary >= 0) {
+		if (mantissa >= ((uint64_t)1 << (62 - binary))) {
+			*overflow = 1;
+			return 0;
+		}
+		result = fixed_round_div((int64_t)(mantissa << binary), denominator);
+	} else {
+		result = fixed_round_div((int64_t)mantissa, denominator << -binary);
+	}
+	if (result > INT32_MAX) {
+		*overflow = 1;
+		return 0;
+	}
+	return (int32_t)(negative ? -result : result);
+}
+
+int fixed_from_text(const char *text, int shift, int32_t *out)
+{
+	const char *p = text + (*text == '+' || *text == '-');
+	char *end;
+	int overflow;
+	/* NaN and infinity, as strtod would read them: not finite (status 2). */
+	if ((p[0] == 'n' || p[0] == 'N') || (p[0] == 'i' || p[0] == 'I')) {
+		const char *w = (p[0] == 'n' || p[0] == 'N') ? "nan" : "inf";
+		int i;
+		for (i = 0; i < 3 && (p[i] | 0x20) == w[i]; i++)
+			;
+		if (i == 3) {
+			*out = 0;
+			return 2;
+		}
+	}
+	*out = fixed_parse(text, &end, shift, &overflow);
+	if (end == text || *end != '\0')
+		return 1;
+	return overflow ? 3 : 0;
+}
+
+int32_t fixed_ldexp(int32_t x, int e)
+{
+	if (e >= 0)
+		return fixed_saturate(e > 31 ? (x ? (x > 0 ? INT32_MAX : -INT32_MAX) : 0)
+					     : (int64_t)x * ((int64_t)1 << e));
+	return e < -31 ? 0 : (int32_t)(((int64_t)x + ((int64_t)1 << (-e - 1))) >> -e);
+}
+
+int fixed_length_shift(int32_t extent, int measured_shift)
+{
+	/* At most 4096 (2^12): squares, ray lengths across the scene and their sums keep
+	 * headroom in Q16.16 and Q32.32; at least 2048, to use the bits there are. */
+	int s = measured_shift;
+	int64_t e = extent > 0 ? extent : 1;
+	while (e > (int64_t)4096 * 65536) {
+		e >>= 1;
+		s--;
+	}
+	while (e <= (int64_t)2048 * 65536 && s < 16) {
+		e <<= 1;
+		s++;
+	}
+	return s;
+}
+
+int fixed_can_represent(int32_t extent, int32_t feature, const char **why)
+{
+	/* The smallest feature (a radius, a cone's length) must keep its square and a hit
+	 * point good to a few LSB: at least 1/16384 of the extent, 1/4 unit at full scale. */
+	*why = NULL;
+	if (feature > 0 && (int64_t)feature * 16384 < extent) {
+		*why = "the ratio of its extent to its smallest feature is over 16384";
+		return 0;
+	}
+	return 1;
+}
+
+void fixed_format(int32_t x, char *buf, size_t size)
+{
+	uint32_t magnitude = x < 0 ? (uint32_t)(-(int64_t)x) : (uint32_t)x;
+	uint32_t fraction = (uint32_t)(((uint64_t)(magnitude & 0xFFFF) * 1000000 + 32768) >> 16);
+	uint32_t whole = magnitude >> 16;
+	if (fraction >= 1000000) {
+		whole++;
+		fraction -= 1000000;
+	}
+	snprintf(buf, size, "%s%lu.%06lu", x < 0 ? "-" : "", (unsigned long)whole,
+		 (unsigned long)fraction);
+}
+
+#else
+/* ISO C wants at least one declaration in a file. */
+typedef int fixed_unused;
+#endif
