@@ -54,8 +54,11 @@ int output_open(output *out, const char *path)
 		diag_error(path, 0, "output path too long");
 		return 0;
 	}
+	/* A signal the caller ignores (nohup's SIGHUP, SIGINT for a background job) must
+	 * stay ignored: it would otherwise kill a run that was meant to survive it. */
 	for (i = 0; i < sizeof signals / sizeof signals[0]; i++)
-		signal(signals[i], remove_temp_and_die);
+		if (signal(signals[i], remove_temp_and_die) == SIG_IGN)
+			signal(signals[i], SIG_IGN);
 	fd = mkstemp(temp_path);
 	if (fd >= 0)
 		(void)fchmod(fd, output_mode(path));

@@ -7,11 +7,11 @@
 
 #include "image.h"
 
-/* Encodes w x h RGB bytes as PNG through `write`, using `arena` (size bytes) for all of
- * the encoder's memory. Returns 1 on success, 0 when the arena runs out, -1 when a
- * write fails. */
+/* Encodes w x h RGB bytes as PNG through `write`, using the arena of `size` bytes at
+ * `base` for all of the encoder's memory. Returns 1 on success, 0 when the arena runs
+ * out, -1 when a write fails. */
 int png_write(const unsigned char *rgb, int w, int h, write_fn write, void *ctx,
-	      unsigned char *arena, size_t size);
+	      unsigned char *base, size_t size);
 
 /* Arena bytes the last png_write used at most (for measuring png_arena_needed). */
 size_t png_arena_peak(void);
@@ -33,5 +33,8 @@ void png_sink_init(png_sink *p, write_fn write, void *ctx);
 
 /* Can a w x h image be written as PNG with the static arena? */
 int png_fits(int w, int h);
+
+/* Does this build write PNG at all? (The fixed-point build does not.) */
+int png_available(void);
 
 #endif

@@ -207,7 +207,8 @@ static void test_lights(void)
 
 	/* A colour must be on the light's line: numbers on the next line are not one. */
 	EXPECT_ERROR(VIEW "l 1 2 3\n0.5 0.5 0.5\n", 9, "unknown command '0.5'");
-	EXPECT_ERROR(VIEW "l 1 2 3 1 1\n", 9,
+	/* The end of the file is reported on its last line. */
+	EXPECT_ERROR(VIEW "l 1 2 3 1 1\n", 8,
 		     "unexpected end of file (expected a number (light colour))");
 }
 
@@ -252,7 +253,11 @@ static void test_materials(void)
 	EXPECT_ERROR(VIEW "f 1 1 1 0 0 0 0.5 0\n", 8,
 		     "material: a transmitting material (T > 0) needs an index of refraction > 0, "
 		     "got 0");
-	EXPECT_ERROR(VIEW "f 1 1 1 -0.5 0 0 0 1\n", 8, "must not be negative");
+	EXPECT_ERROR(VIEW "f 1 1 1 -0.5 0 0 0 1\n", 8, "material Kd must not be negative, got -0.5");
+	/* Each value is named at its own token, whatever line the rest is on. */
+	EXPECT_ERROR(VIEW "f 1 -0.5 1\n1 0 0 0 1\n", 8,
+		     "material colour must not be negative, got -0.5");
+	EXPECT_ERROR(VIEW "f 1 1 1\n1 0 0 -1 1\n", 9, "material T must not be negative, got -1");
 	EXPECT_ERROR(VIEW "f 1 1 1 1 0 0 0\ns 0 0 0 1\n", 9,
 		     "expected a number (material index of refraction), got 's'");
 }
@@ -363,7 +368,7 @@ static void test_patch(void)
 	CHECK_VEC(sc.normals[2], 0.7071067811865475, 0, 0.7071067811865475);
 	EXPECT_WARNING(VIEW "pp 3\n0 0 0 0 0 1\n0 0 0 0 0 1\n0 0 0 0 0 1\n", 8,
 		       "patch with zero area; skipped");
-	EXPECT_ERROR(VIEW "pp 3\n0 0 0 0 0 1\n1 0 0\n", 11,
+	EXPECT_ERROR(VIEW "pp 3\n0 0 0 0 0 1\n1 0 0\n", 10,
 		     "unexpected end of file (expected a number (patch vertex normal))");
 }
 
@@ -392,7 +397,12 @@ static void test_cone(void)
 	CHECK_NEAR(sc.objects[0].u.cone.base_radius, 1, 0);
 	CHECK_NEAR(sc.objects[0].u.cone.apex_radius, 0.5, 0);
 
-	EXPECT_ERROR(VIEW "c 0 0 0 -1 0 0 1 1\n", 8, "cone: both radii must have the same sign");
+	EXPECT_ERROR(VIEW "c 0 0 0 -1 0 0 1 1\n", 8,
+		     "cone: both radii must have the same sign, got base radius < 0 and apex "
+		     "radius 1");
+	EXPECT_ERROR(VIEW "c 0 0 0 0 0 0 1 -1\n", 8,
+		     "cone: both radii must have the same sign, got base radius >= 0 and apex "
+		     "radius -1");
 	EXPECT_WARNING(VIEW "c 1 2 3 1 1 2 3 1\n", 8, "cone with zero length; skipped");
 	EXPECT_WARNING(VIEW "c 0 0 0 0 0 0 1 0\n", 8, "cone with both radii 0; skipped");
 }
@@ -455,7 +465,7 @@ static void test_absorb(void)
 		     "absorption coefficient must not be negative, got -2");
 	EXPECT_ERROR(VIEW "absorb 1 1 -2\n", 8,
 		     "absorption coefficient must not be negative, got -2");
-	EXPECT_ERROR(VIEW "absorb 1 1\n", 9,
+	EXPECT_ERROR(VIEW "absorb 1 1\n", 8,
 		     "unexpected end of file (expected a number (absorption coefficient))");
 }
 
@@ -516,7 +526,7 @@ static void test_polyhedron(void)
 		     "polyhedron: a plane normal is zero");
 	EXPECT_ERROR(VIEW "polyhedron 0\n", 8,
 		     "polyhedron plane count must be 1 to " STR(RT_MAX_HEDRON_PLANES) ", got 0");
-	EXPECT_ERROR(VIEW "polyhedron 2\n1 0 0 1\n", 10,
+	EXPECT_ERROR(VIEW "polyhedron 2\n1 0 0 1\n", 9,
 		     "unexpected end of file (expected a number (polyhedron plane normal))");
 }
 
@@ -600,7 +610,7 @@ static void test_unusual_valid(void)
 
 static void test_numbers(void)
 {
-	EXPECT_ERROR(VIEW "s 1 2 3\n", 9,
+	EXPECT_ERROR(VIEW "s 1 2 3\n", 8,
 		     "unexpected end of file (expected a number (sphere radius))");
 	EXPECT_ERROR(VIEW "s 1 2 3\ns 0 0 0 1\n", 9, "expected a number (sphere radius), got 's'");
 	EXPECT_ERROR(VIEW "s 0 0 zero 1\n", 8, "expected a number (sphere centre), got 'zero'");
@@ -618,14 +628,24 @@ static void test_numbers(void)
 		     "' (out of range)");
 	EXPECT_OK(VIEW "s 1e12 0 0 1\n");
 	EXPECT_ERROR(VIEW "s -1.0000001e12 0 0 1\n", 8, "within +-1e12");
-	EXPECT_ERROR(VIEW "l 1 2\n", 9,
+	EXPECT_ERROR(VIEW "l 1 2\n", 8,
 		     "unexpected end of file (expected a number (light position))");
-	EXPECT_ERROR(VIEW "b 1 1\n", 9, "expected a number (background colour)");
+	EXPECT_ERROR(VIEW "b 1 1\n", 8, "expected a number (background colour)");
 	EXPECT_ERROR(VIEW "ambient 0.1 x 0.1\n", 8, "expected a number (ambient colour), got 'x'");
 	EXPECT_ERROR(VIEW "f 1 1 1 1 0 0 0 nan\n", 8, "not a finite number");
-	EXPECT_ERROR(VIEW "c 0 0 0 1 0 0\n", 9, "expected a number (cone apex centre)");
-	EXPECT_ERROR(VIEW "plane 0 0 0 0 1\n", 9, "expected a number (plane normal)");
+	EXPECT_ERROR(VIEW "c 0 0 0 1 0 0\n", 8, "expected a number (cone apex centre)");
+	EXPECT_ERROR(VIEW "plane 0 0 0 0 1\n", 8, "expected a number (plane normal)");
 	EXPECT_ERROR(VIEW "box 0 0 0 1 1 one\n", 8, "expected a number (box corner), got 'one'");
+
+	/* The end of the file is its last line, even after blank lines and comments. */
+	EXPECT_ERROR(VIEW "s 1 2 3\n\n# end\n", 10, "unexpected end of file");
+	EXPECT_ERROR(VIEW "s 1 2 3 # no newline", 8, "unexpected end of file");
+
+	/* An extra number is read as a command: the message says what it probably is. */
+	EXPECT_ERROR(VIEW "s 0 0 0 1 2\n", 8,
+		     "unknown command '2' (a number where a command belongs: one number too many "
+		     "before it?)");
+	EXPECT_ERROR(VIEW "s 0 0 0 1 nan\n", 8, "unknown command 'nan' (a number where");
 
 	/* Only the first error is reported; later ones would be its consequences. */
 	EXPECT_ERROR(VIEW "s 0 0 x 1\nfoo\nbar 1\n", 8, "got 'x'");
@@ -645,7 +665,7 @@ static void test_polygon_counts(void)
 	EXPECT_ERROR(VIEW "p three\n", 8,
 		     "expected polygon vertex count (a whole number), got 'three'");
 	EXPECT_ERROR(VIEW "pp 2\n", 8, "patch vertex count must be 3 to");
-	EXPECT_ERROR(VIEW "p 3\n0 0 0\n1 0 0\n", 11,
+	EXPECT_ERROR(VIEW "p 3\n0 0 0\n1 0 0\n", 10,
 		     "unexpected end of file (expected a number (polygon vertex))");
 	/* One past the capacity, whatever the build set it to. */
 	snprintf(text, sizeof text, "%sp %d\n", VIEW, RT_MAX_POLY_VERTS + 1);
@@ -658,11 +678,11 @@ static void test_view_errors(void)
 	EXPECT_ERROR("v\nat 0 0 0\n", 2, "view: expected 'from', got 'at'");
 	EXPECT_ERROR("v\nfrom 0 0 -10\nat 0 0 0\nup 0 1 0\nangle 45\nresolution 4 4\n", 6,
 		     "view: expected 'hither', got 'resolution'");
-	EXPECT_ERROR("v\nfrom 0 0 -10\n", 3, "view: expected 'at', got 'end of file'");
+	EXPECT_ERROR("v\nfrom 0 0 -10\n", 2, "view: unexpected end of file (expected 'at')");
 	EXPECT_ERROR("v\nfrom 0 0\nat 0 0 0\n", 3, "expected a number (view from), got 'at'");
 
-	/* No view at all: reported at the end of the file. */
-	EXPECT_ERROR("s 0 0 0 1\nl 1 1 1\n", 3, "no view: a scene needs a 'v' entity");
+	/* No view at all: reported at the end of the file, its last line. */
+	EXPECT_ERROR("s 0 0 0 1\nl 1 1 1\n", 2, "no view: a scene needs a 'v' entity");
 	EXPECT_ERROR("", 1, "no view");
 	EXPECT_ERROR("# only a comment", 1, "no view");
 
@@ -764,7 +784,8 @@ static void test_capacities(void)
 	}
 	text[n] = '\0';
 	expect_message(text, n, 0, 8 + RT_MAX_LIGHTS,
-		       "too many lights: the limit is RT_MAX_LIGHTS (raise it in src/config.h)",
+		       "too many lights: the limit is RT_MAX_LIGHTS = " STR(RT_MAX_LIGHTS)
+		       " (raise it in src/config.h)",
 		       __LINE__);
 	/* Exactly at the capacity is fine, and each gets 1/sqrt(N). */
 	CHECK_INT(parse_bytes(text, n - strlen(line)), 1);
