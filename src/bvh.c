@@ -41,7 +41,8 @@ static int hedron_bounds(const scene *s, const object *o, vec3 *lo, vec3 *hi)
 {
 	halfspace planes[RT_MAX_HEDRON_PLANES + 6];
 	int count = o->u.hedron.count, i, j, k, m, corners = 0;
-	const real far_away = REAL_C(1e15);
+	/* A third of REAL_FAR: three such terms in Cramer's rule below still fit fixed point. */
+	const real far_away = real_div(REAL_FAR, REAL_C(3.0));
 	for (i = 0; i < count; i++)
 		planes[i] = s->planes[o->u.hedron.first + i];
 	for (i = 0; i < 6; i++) {
@@ -70,7 +71,7 @@ static int hedron_bounds(const scene *s, const object *o, vec3 *lo, vec3 *hi)
 				p = vec_scale(p, real_div(REAL_C(1.0), det));
 				for (m = 0; m < count + 6; m++) {
 					real slack = real_surface_offset(real_max(REAL_C(1.0), vec_max_abs(p)));
-					if (vec_dot(planes[m].normal, p) - planes[m].offset > slack)
+					if (vec_dot(planes[m].normal, p) > planes[m].offset + slack)
 						break;
 				}
 				if (m < count + 6)
@@ -127,7 +128,7 @@ static int object_bounds(const scene *s, const object *o, vec3 *lo, vec3 *hi)
 static int bin_of(real offset, real extent)
 {
 	real b = real_mul(real_div(offset, extent), real_from_int(BINS));
-	return b >= REAL_C(0.0) ? (b < real_from_int(BINS) ? (int)b : BINS - 1) : 0;
+	return b >= REAL_C(0.0) ? (b < real_from_int(BINS) ? real_to_int(b) : BINS - 1) : 0;
 }
 
 static real2 half_area(vec3 lo, vec3 hi)

@@ -9,7 +9,7 @@ int camera_init(camera *c, const view *v, int width, int height)
 {
 	vec3 forward = vec_sub(v->at, v->from);
 	vec3 right;
-	if (!(vec_dot(forward, forward) > REAL_C(0.0)))
+	if (!(vec_dot2(forward, forward) > 0))
 		return 0;
 	c->forward = vec_normalize(forward);
 	/* Orthonormalise: right = forward x up, then the true up = right x forward. */
@@ -20,7 +20,6 @@ int camera_init(camera *c, const view *v, int width, int height)
 	c->up = vec_cross(c->right, c->forward);
 	c->eye = v->from;
 	c->half_width = real_tan(real_mul(real_mul(v->angle, REAL_C(0.5)), DEGREES_TO_RADIANS));
-	c->pixel = real_div(real_mul(REAL_C(2.0), c->half_width), real_from_int(width));
 	c->width = width;
 	c->height = height;
 	return 1;
@@ -28,10 +27,13 @@ int camera_init(camera *c, const view *v, int width, int height)
 
 ray camera_ray(const camera *c, real x, real y)
 {
-	/* Image-plane offsets at unit distance; y grows downwards in the image. */
-	real u = real_mul(x, c->pixel) - c->half_width;
-	real v = real_mul(real_from_int(c->height), real_mul(REAL_C(0.5), c->pixel)) -
-		 real_mul(y, c->pixel);
+	/* Image-plane offsets at unit distance, as fractions of the half width; y grows
+	 * downwards in the image. (Multiplying x by a rounded pixel size would carry its
+	 * rounding across the row: in Q16.16 several pixels at the far edge.) */
+	real width = real_from_int(c->width);
+	real u = real_mul(real_div(real_mul(REAL_C(2.0), x) - width, width), c->half_width);
+	real v = real_mul(real_div(real_from_int(c->height) - real_mul(REAL_C(2.0), y), width),
+			  c->half_width);
 	ray r;
 	r.origin = c->eye;
 	r.dir = vec_normalize(vec_madd(vec_madd(c->forward, u, c->right), v, c->up));

@@ -9,7 +9,6 @@ typedef struct {
 	vec3 eye;
 	vec3 forward, right, up; /* orthonormal, right-handed as NFF is */
 	real half_width;         /* tan(angle / 2): half the image plane at unit distance */
-	real pixel;              /* size of one pixel on that plane */
 	int width, height;
 } camera;
 

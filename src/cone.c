@@ -43,7 +43,7 @@ int cone_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h)
 		 * gradient: a ray along the axis, or across it through the tip, touches the
 		 * cone only there. A touch is a hit (like a sphere's tangent); give it the axis
 		 * out of the tip as its normal rather than the zero vector. */
-		if (!(vec_dot(normal, normal) > REAL_C(0.0)))
+		if (!(vec_dot2(normal, normal) > 0))
 			normal = c->slope < REAL_C(0.0) ? c->axis : vec_neg(c->axis);
 		if ((o->flags & OBJ_INSIDE_ONLY) && vec_dot(normal, r->dir) < REAL_C(0.0))
 			continue;

@@ -55,6 +55,7 @@ int32_t fixed_ratio2(int64_t a, int64_t b)
 	return fixed_saturate(negative ? -q : q);
 }
 
+
 /* 2^y for y in Q16.16, as Q16.16: 2^k by shifting, 2^f for the fraction f by the
  * Taylor series of e^(f ln 2) in Q2.30 (error below 1e-7 for f < 1). */
 static int32_t exp2_fixed(int64_t y)
@@ -69,7 +70,7 @@ static int32_t exp2_fixed(int64_t y)
 		return FIXED_MAX;
 	if (y < (int64_t)-17 * 65536)
 		return 0;
-	k = y >> 16;                /* floor */
+	k = y >= 0 ? y / 65536 : -((-y + 65535) / 65536); /* floor */
 	f = y - k * 65536;          /* [0, 1) in Q16.16 */
 	u = (f << 14) * ln2 >> 30;  /* f ln 2 in Q2.30 */
 	sum = inverse_factorial[8];
@@ -98,9 +99,9 @@ static int64_t log2_fixed(int32_t x)
 	while (top > 0 && !(x & ((int32_t)1 << top)))
 		top--; /* x in [2^top, 2^(top+1)) */
 	m = (int64_t)x << (30 - top);
-	result = (int64_t)(top - 16) << 24;
+	result = (int64_t)(top - 16) * ((int64_t)1 << 24);
 	for (i = 23; i >= 0; i--) {
-		m = m * m >> 30;
+		m = (int64_t)((uint64_t)m * (uint64_t)m >> 30); /* m is positive */
 		if (m >= ((int64_t)2 << 30)) {
 			m >>= 1;
 			result += (int64_t)1 << i;
@@ -124,7 +125,7 @@ int32_t fixed_pow(int32_t x, int32_t y)
 int32_t fixed_tan(int32_t x)
 {
 	/* sin and cos by their nested Taylor series in Q4.28 (x^2 reaches 2.47 at pi/2). */
-	int64_t t = (int64_t)x << 12, t2 = t * t >> 28, s = (int64_t)1 << 28, c = (int64_t)1 << 28;
+	int64_t t = (int64_t)x * 4096, t2 = t * t >> 28, s = (int64_t)1 << 28, c = (int64_t)1 << 28;
 	int k;
 	for (k = 15; k >= 3; k -= 2)
 		s = ((int64_t)1 << 28) - (t2 * s >> 28) / ((int64_t)k * (k - 1));
@@ -166,10 +167,11 @@ int32_t fixed_parse(const char *s, char **end, int shift, int *overflow)
 	}
 	if (*p == 'e' || *p == 'E') {
 		const char *q = p + 1;
-		int e = 0, e_negative = 0;
+		int e_negative = 0;
 		if (*q == '+' || *q == '-')
 			e_negative = *q++ == '-';
 		if (*q >= '0' && *q <= '9') {
+			int e = 0;
 			for (; *q >= '0' && *q <= '9'; q++)
 				e = e < 10000 ? e * 10 + (*q - '0') : e;
 			exponent += e_negative ? -e : e;

@@ -30,6 +30,14 @@ static inline int32_t fixed_mul(int32_t a, int32_t b)
 	return fixed_saturate(((int64_t)a * b + 0x8000) >> 16);
 }
 
+/* A dot product summed in 64 bits and rounded once. */
+static inline int32_t fixed_dot3(int32_t ax, int32_t ay, int32_t az, int32_t bx, int32_t by,
+				 int32_t bz)
+{
+	return fixed_saturate(((int64_t)ax * bx + (int64_t)ay * by + (int64_t)az * bz + 0x8000) >>
+			      16);
+}
+
 static inline int32_t fixed_div(int32_t a, int32_t b)
 {
 	if (b == 0)

@@ -264,6 +264,10 @@ int main(int argc, char **argv)
 			   opt.row_end, height);
 		return 2;
 	}
+	if (opt.format == FORMAT_PNG && !png_available()) {
+		diag_error(opt.output_path, 0, "this build (%s) writes no PNG; write .ppm", REAL_NAME);
+		return 1;
+	}
 	if (opt.format == FORMAT_PNG && !png_fits(width, height)) {
 		diag_error(opt.output_path, 0,
 			   "%dx%d is too large for PNG output (the encoder's fixed memory, "

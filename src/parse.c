@@ -7,6 +7,7 @@
 #include <errno.h>
 #include <limits.h>
 #include <stdarg.h>
+#include <stdlib.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -32,6 +33,7 @@ typedef struct {
 	int have_tok;  /* tok holds a token (not end of input) */
 	int failed;    /* an error was reported */
 	int length_shift; /* lengths are read times 2^length_shift (fixed point's scale) */
+	real longest;     /* the largest length read, in magnitude (skipped objects too) */
 } lexer;
 
 static int next_byte(lexer *lx)
@@ -201,7 +203,10 @@ static int read_number(lexer *lx, const char *what, real *out)
 /* A length or a position: scaled by the scene's length scale. */
 static int read_length(lexer *lx, const char *what, real *out)
 {
-	return read_scaled(lx, what, lx->length_shift, out);
+	if (!read_scaled(lx, what, lx->length_shift, out))
+		return 0;
+	lx->longest = real_max(lx->longest, real_fabs(*out));
+	return 1;
 }
 
 static int read_vec(lexer *lx, const char *what, vec3 *out)
@@ -226,6 +231,21 @@ static int read_nonnegative(lexer *lx, const char *what, const char *name, real 
 	if (*out < REAL_C(0.0))
 		return fail(lx, lx->tok_line, "%s must not be negative, got %s", name, lx->tok);
 	return 1;
+}
+
+/* The Phong exponent: beyond what the build holds it only gets sharper, so it is held at
+ * the largest value (SPD writes 100000, past Q16.16's 32767, for "no highlight"). */
+static int read_shine(lexer *lx, real *out)
+{
+	if (next_token(lx)) {
+		push_back(lx);
+		if (real_from_text(lx->tok, 0, out) == REAL_TEXT_OUT_OF_RANGE && lx->tok[0] != '-') {
+			(void)next_token(lx);
+			*out = REAL_MAX;
+			return 1;
+		}
+	}
+	return read_nonnegative(lx, "a number (material Shine)", "material Shine", out);
 }
 
 /* Reads a whole number in [lo, hi]; `limit` names the capacity macro behind hi, if any. */
@@ -395,7 +415,7 @@ static int parse_view(parser *p)
 	{
 		vec3 dir = vec_sub(v->at, v->from);
 		vec3 side = vec_cross(vec_normalize(dir), vec_normalize(v->up));
-		if (!(vec_dot(dir, dir) > REAL_C(0.0)))
+		if (!(vec_dot2(dir, dir) > 0))
 			return fail(&p->lx, p->view_line, "view: 'from' and 'at' are the same point");
 		if (!(vec_length(side) > REAL_C(1e-9)))
 			return fail(&p->lx, p->view_line,
@@ -452,7 +472,7 @@ static int parse_material(parser *p)
 	    !read_nonnegative(lx, colour, "material colour", &m.color.z) ||
 	    !read_nonnegative(lx, "a number (material Kd)", "material Kd", &m.kd) ||
 	    !read_nonnegative(lx, "a number (material Ks)", "material Ks", &m.ks) ||
-	    !read_nonnegative(lx, "a number (material Shine)", "material Shine", &m.shine) ||
+	    !read_shine(lx, &m.shine) ||
 	    !read_nonnegative(lx, "a number (material T)", "material T", &m.kt) ||
 	    !read_number(lx, "a number (material index of refraction)", &m.ior))
 		return 0;
@@ -562,7 +582,7 @@ static int parse_polygon(parser *p, int patch)
 			return 0;
 	}
 	normal = newell_normal(s->vertices + first, (int)count);
-	if (!(vec_dot(normal, normal) > REAL_C(0.0))) {
+	if (!(vec_dot2(normal, normal) > 0)) {
 		warn(p, line, patch ? "patch with zero area" : "polygon with zero area");
 		return 1;
 	}
@@ -585,7 +605,7 @@ static int parse_polygon(parser *p, int patch)
 		/* A zero vertex normal falls back to the face normal. */
 		for (i = 0; i < count; i++) {
 			vec3 *n = &s->normals[first + i];
-			*n = vec_dot(*n, *n) > REAL_C(0.0) ? vec_normalize(*n) : poly->normal;
+			*n = vec_dot2(*n, *n) > 0 ? vec_normalize(*n) : poly->normal;
 		}
 	}
 	s->vertex_count += (int)count;
@@ -633,7 +653,7 @@ static int parse_cone(parser *p)
 		return 0;
 	o->flags |= inside_only;
 	o->u.cone.base = base;
-	o->u.cone.axis = vec_scale(axis, real_div(REAL_C(1.0), length));
+	o->u.cone.axis = vec_div(axis, length);
 	o->u.cone.length = length;
 	o->u.cone.base_radius = base_radius;
 	o->u.cone.apex_radius = apex_radius;
@@ -653,7 +673,7 @@ static int add_halfspace(parser *p, vec3 n, real d, int line)
 	if (s->plane_count == RT_MAX_PLANES)
 		return capacity_error(p, line, "polyhedron planes in the scene", "RT_MAX_PLANES",
 				      RT_MAX_PLANES);
-	s->planes[s->plane_count].normal = vec_scale(n, real_div(REAL_C(1.0), length));
+	s->planes[s->plane_count].normal = vec_div(n, length);
 	s->planes[s->plane_count].offset = real_div(d, length);
 	s->plane_count++;
 	return 1;
@@ -725,7 +745,7 @@ static int parse_plane(parser *p)
 	if (!read_point(&p->lx, "a number (plane point)", &point) ||
 	    !read_vec(&p->lx, "a number (plane normal)", &normal))
 		return 0;
-	if (!(vec_dot(normal, normal) > REAL_C(0.0)))
+	if (!(vec_dot2(normal, normal) > 0))
 		return fail(&p->lx, line, "plane: the normal is zero");
 	o = new_object(p, SHAPE_PLANE, line);
 	if (!o)
@@ -865,6 +885,7 @@ static int parse_pass(scene *s, const char *file, read_fn read, void *ctx, int l
 	if (!p->view_line)
 		return fail(&p->lx, p->lx.last_line, "no view: a scene needs a 'v' entity");
 	finish_lights(p);
+	s->longest_length = p->lx.longest;
 	return 1;
 }
 
@@ -908,18 +929,20 @@ int parse_scene_file(scene *s, const char *path)
 	/* Floating point reads the file once. Fixed point reads it first at a coarse scale
 	 * that holds any coordinate, measures the scene, and reads it again at the scale
 	 * that fits its extent into Q16.16's range (REAL_FIRST_PASS_SHIFT, real_length_shift). */
-	int shift = REAL_FIRST_PASS_SHIFT, final_shift;
+	int final_shift;
 	real extent, feature;
 	const char *why;
-	if (shift != 0) {
-		int ok;
+	/* Test the macro, not a variable holding it: the condition is fixed per build, which
+	 * static analysis reports about a variable ("always false"). */
+	if (REAL_FIRST_PASS_SHIFT != 0) {
+		int shift = REAL_FIRST_PASS_SHIFT, ok;
 		diag_set_sink(quiet, NULL);
 		ok = parse_file_pass(s, path, shift);
 		diag_set_sink(NULL, NULL);
 		if (!ok)
 			return parse_file_pass(s, path, shift); /* again, to report the error */
-		scene_measure(s, &extent, &feature);
-		final_shift = real_length_shift(extent, shift);
+		/* Every length read counts, also those of objects skipped at this coarse scale. */
+		final_shift = real_length_shift(s->longest_length, shift);
 	} else {
 		final_shift = 0;
 	}
@@ -928,7 +951,11 @@ int parse_scene_file(scene *s, const char *path)
 	s->length_shift = final_shift;
 	scene_measure(s, &extent, &feature);
 	if (!real_can_represent(extent, feature, &why)) {
-		diag_error(path, 0, "cannot be rendered in %s: %s", REAL_NAME, why);
+		char e[32], f[32];
+		real_format(real_ldexp(extent, -final_shift), e, sizeof e);
+		real_format(real_ldexp(feature, -final_shift), f, sizeof f);
+		diag_error(path, 0, "cannot be rendered in %s: extent %s, smallest feature %s: %s",
+			   REAL_NAME, e, f, why);
 		return 0;
 	}
 	return 1;

@@ -5,6 +5,10 @@
  * See LICENSE for copyright and licence. */
 #include "png.h"
 
+/* stb_image_write has floating-point code (HDR, JPEG): the fixed-point build, which has
+ * none at all, goes without PNG (png_available says so). */
+#if !REAL_FIXED
+
 #include <setjmp.h>
 #include <string.h>
 
@@ -201,3 +205,31 @@ void png_sink_init(png_sink *p, write_fn write, void *ctx)
 	p->width = p->height = p->rows = 0;
 	p->rgb = NULL;
 }
+
+int png_available(void)
+{
+	return 1;
+}
+
+#else
+
+int png_available(void)
+{
+	return 0;
+}
+
+int png_fits(int w, int h)
+{
+	(void)w;
+	(void)h;
+	return 0;
+}
+
+void png_sink_init(png_sink *p, write_fn write, void *ctx)
+{
+	(void)p;
+	(void)write;
+	(void)ctx;
+}
+
+#endif

@@ -86,7 +86,7 @@ static vec3 patch_normal(const scene *s, const polygon_shape *poly, vec3 p)
 			n = vec_madd(n, real2_ratio(a1, whole), vn[i]);
 			n = vec_madd(n, real2_ratio(a2, whole), vn[i + 1]);
 			n = vec_normalize(n);
-			return vec_dot(n, n) > REAL_C(0.0) ? n : poly->normal;
+			return vec_dot2(n, n) > 0 ? n : poly->normal;
 		}
 	}
 	return poly->normal;

@@ -10,6 +10,7 @@ void scene_init(scene *s, const char *file)
 	memset(&s->camera, 0, sizeof s->camera);
 	s->file = file;
 	s->length_shift = 0;
+	s->longest_length = REAL_C(0.0);
 	s->background = vec_make(REAL_C(0.0), REAL_C(0.0), REAL_C(0.0));
 	s->ambient = s->background;
 	s->depth = RT_DEFAULT_DEPTH;

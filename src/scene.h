@@ -112,6 +112,7 @@ typedef struct {
 typedef struct {
 	const char *file; /* scene file name, for messages */
 	int length_shift; /* lengths are stored times 2^length_shift (fixed point's scale) */
+	real longest_length; /* the largest length in the file, in magnitude, as stored */
 	view camera;
 	vec3 background;
 	vec3 ambient;

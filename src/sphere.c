@@ -48,10 +48,16 @@ int sphere_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h
 	t0 = -b - root;
 	t1 = -b + root;
 #else
-	/* Perpendicular offset of the centre from the ray line: terms of size r^2, not |f|^2. */
-	vec3 v = vec_madd(f, -b, r->dir);
-	real2 discriminant = s->radius2 - vec_dot2(v, v);
-	if (!solve_quadratic(REAL_C(1.0), b, c, discriminant, &t0, &t1))
+	/* a = |d|^2 is 1 only up to rounding, and fixed point's directions are short by up
+	 * to 2^-16: over a long ray that would put the hit point far off the surface, so
+	 * the quadratic keeps its a. Perpendicular offset of the centre from the ray line
+	 * (terms of size r^2, not |f|^2); b^2 - a c = a (r^2 - |v|^2), written as
+	 * D + D (a - 1) to keep fixed point's low bits. */
+	real a = vec_dot(r->dir, r->dir);
+	vec3 v = vec_madd(f, -real_div(b, a), r->dir);
+	real2 perpendicular = s->radius2 - vec_dot2(v, v);
+	real2 discriminant = perpendicular + real2_scale(perpendicular, a - REAL_C(1.0));
+	if (!solve_quadratic(a, b, c, discriminant, &t0, &t1))
 		return 0;
 #endif
 	/* The near root enters, the far root leaves; an inside-only sphere shows only exits. */
@@ -64,7 +70,7 @@ int sphere_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h
 	if (h) {
 		h->t = t;
 		h->point = vec_madd(r->origin, t, r->dir);
-		h->normal = vec_scale(vec_sub(h->point, s->center), real_div(REAL_C(1.0), s->radius));
+		h->normal = vec_div(vec_sub(h->point, s->center), s->radius);
 		h->shading = h->normal;
 	}
 	return 1;

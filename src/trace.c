@@ -42,7 +42,7 @@ void tracer_init(tracer *t, const scene *s, int depth, real cutoff)
 			continue;
 		probe.origin = s->camera.from;
 		probe.dir = vec_make(REAL_C(0.0), REAL_C(0.0), REAL_C(1.0));
-		if (object_intersect(s, i, &probe, REAL_C(0.0), REAL_MAX, &h) &&
+		if (object_intersect(s, i, &probe, REAL_C(0.0), REAL_FAR, &h) &&
 		    vec_dot(h.normal, probe.dir) > REAL_C(0.0) &&
 		    t->eye_media.count < RT_MAX_MEDIA)
 			t->eye_media.material[t->eye_media.count++] = o->material;
@@ -107,7 +107,7 @@ static vec3 shade_lights(tracer *t, const hit *h, const material *mat, vec3 mirr
 		ray shadow;
 		if (!(distance > REAL_C(0.0)))
 			continue;
-		dir = vec_scale(to_light, real_div(REAL_C(1.0), distance));
+		dir = vec_div(to_light, distance);
 		/* A light behind the surface sends no shadow ray (SPD rule). */
 		if (vec_dot(h->normal, dir) <= REAL_C(0.0))
 			continue;
@@ -189,7 +189,9 @@ static vec3 trace_ray(tracer *t, const ray *r, int level, real weight, const med
 	real ks;
 	hit h;
 
-	if (!scene_intersect(s, r, REAL_MAX, &h)) {
+	/* REAL_FAR: beyond anything in the scene, and far enough from overflow that the hit
+	 * point can be computed in every type. */
+	if (!scene_intersect(s, r, REAL_FAR, &h)) {
 		if (hit_object)
 			*hit_object = -1;
 		/* A ray that never leaves an absorbing medium is absorbed completely. */

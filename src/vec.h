@@ -42,7 +42,7 @@ static inline vec3 vec_madd(vec3 a, real s, vec3 b)
 
 static inline real vec_dot(vec3 a, vec3 b)
 {
-	return real_mul(a.x, b.x) + real_mul(a.y, b.y) + real_mul(a.z, b.z);
+	return real_dot3(a.x, a.y, a.z, b.x, b.y, b.z);
 }
 
 static inline vec3 vec_cross(vec3 a, vec3 b)
@@ -60,11 +60,18 @@ static inline real2 vec_dot2(vec3 a, vec3 b)
 
 static inline real vec_length(vec3 a) { return real2_sqrt(vec_dot2(a, a)); }
 
+/* a / s, component by component: a reciprocal of a large s would keep few bits in
+ * fixed point (1/2560 is 26 LSB in Q16.16, off by 1.6%). */
+static inline vec3 vec_div(vec3 a, real s)
+{
+	return vec_make(real_div(a.x, s), real_div(a.y, s), real_div(a.z, s));
+}
+
 /* Unit vector along a; the zero vector stays zero (callers reject it first). */
 static inline vec3 vec_normalize(vec3 a)
 {
 	real len = vec_length(a);
-	return len > REAL_C(0.0) ? vec_scale(a, real_div(REAL_C(1.0), len)) : a;
+	return len > REAL_C(0.0) ? vec_div(a, len) : a;
 }
 
 /* Largest absolute component: the scale of a point's rounding error. */

@@ -1,7 +1,8 @@
 #!/bin/sh
 # run.sh - runs every test of rt and ends with one line `N passed, N failed`.
 # Called by `make test` after the binaries are built:
-#   unit tests (normal and ASan+UBSan builds), command-line tests, golden renders.
+#   unit tests (normal and ASan+UBSan builds), command-line tests, golden renders, and
+#   the malformed and unusual scenes of tests/bad and tests/good (bad.sh).
 cd "$(dirname "$0")/.." || exit 1
 passed=0
 failed=0
@@ -29,15 +30,18 @@ tally unit "$(./build/unit-tests 2>&1)"
 tally unit-sanitized "$(./build/san/unit-tests 2>&1)"
 tally unit-float "$(./build/unit-tests-float 2>&1)"
 tally unit-long-double "$(./build/unit-tests-ref 2>&1)"
-# Every fuzzing corpus input and every bad scene, parsed and rendered tiny under ASan+UBSan.
+# Every fuzzing corpus input and every bad and good scene, parsed and rendered tiny under
+# ASan+UBSan.
 set -- tests/fuzz/corpus/*
 [ -d tests/bad ] && set -- "$@" tests/bad/*.nff
+[ -d tests/good ] && set -- "$@" tests/good/*.nff
 tally fuzz-replay "$(./build/san/replay "$@" 2>&1)"
-for script in tests/cli.sh tests/golden.sh; do
+for script in tests/cli.sh tests/golden.sh tests/bad.sh; do
 	[ -f "$script" ] || continue
 	name=$(basename "$script" .sh)
 	tally "$name" "$(RT=./rt sh "$script" 2>&1)"
 	tally "$name-sanitized" "$(RT=./build/san/rt sh "$script" 2>&1)"
 done
+tally fixed "$(sh tests/fixed.sh 2>&1)"
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

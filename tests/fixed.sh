@@ -1,0 +1,58 @@
+#!/bin/sh
+# fixed.sh - the Q16.16 fixed-point build against the long-double reference: it renders
+# the bundled scenes with the same objects in (nearly) every pixel, refuses scenes whose
+# dynamic range it cannot hold, and contains no floating-point instruction.
+# Run from the repository root after `make build/rt-fixed build/rt-ref`; ends with
+# `N passed, N failed`. See LICENSE for copyright and licence.
+FIXED=${FIXED:-build/rt-fixed}
+REF=${REF:-build/rt-ref}
+passed=0
+failed=0
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/rt-fixed.XXXXXX") || exit 1
+trap 'rm -rf "$tmp"' EXIT
+
+ok() { passed=$((passed + 1)); }
+bad() {
+	echo "fixed.sh: $*"
+	failed=$((failed + 1))
+}
+
+# Scenes whose objects all lie within reach (no infinite plane running to the horizon,
+# which Q16.16 sees only out to about six times the scene's extent): at most 1% of
+# pixels may hit another object than in the reference, and these stay far below.
+for scene in mirror-spheres glass polygons polyhedron patches; do
+	if ! "$FIXED" --ids -o "$tmp/fixed.pgm" "scenes/$scene.nff" 2>"$tmp/err"; then
+		bad "$scene: refused: $(cat "$tmp/err")"
+		continue
+	fi
+	"$REF" --ids -o "$tmp/ref.pgm" "scenes/$scene.nff"
+	share=$(python3 tests/idcmp.py "$tmp/fixed.pgm" "$tmp/ref.pgm")
+	if awk -v s="$share" 'BEGIN { exit !(s <= 1.0) }'; then ok; else
+		bad "$scene: $share% of pixels hit another object than the reference"
+	fi
+done
+
+# Out of range: a 1e5 sphere beside a unit sphere, a 1e-3 sphere 1000 units away.
+view='v from 0 0 -5 at 0 0 0 up 0 1 0 angle 40 hither 1 resolution 16 16'
+printf '%s\nl 5 5 -5\ns 0 0 0 1\ns 0 -100001 0 100000\n' "$view" >"$tmp/huge.nff"
+printf 'v from 0 0 0 at 0.36 0.48 0.8 up 0 1 0 angle 40 hither 1 resolution 16 16\n' \
+	>"$tmp/tiny.nff"
+printf 'l 5 5 -5\ns 360 480 800 0.001\n' >>"$tmp/tiny.nff"
+for scene in huge tiny; do
+	"$FIXED" "$tmp/$scene.nff" >"$tmp/out" 2>"$tmp/err"
+	status=$?
+	if [ "$status" -eq 1 ] && [ ! -s "$tmp/out" ] &&
+		grep -q "$scene.nff: cannot be rendered in Q16.16 fixed point: extent" "$tmp/err" &&
+		grep -q "smallest feature" "$tmp/err"; then ok; else
+		bad "$scene: expected a refusal naming extent and smallest feature, got status $status: $(cat "$tmp/err")"
+	fi
+done
+
+# No floating point at all: no SSE/x87 instruction in the program (x86-64 only).
+if command -v objdump >/dev/null 2>&1 && [ "$(uname -m)" = x86_64 ]; then
+	count=$(objdump -d "$FIXED" | grep -cE '\b(xmm[0-9]|ymm[0-9]|cvt|fld|fst)' || true)
+	if [ "$count" -eq 0 ]; then ok; else bad "$FIXED has $count floating-point instructions"; fi
+fi
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
