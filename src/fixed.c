@@ -270,11 +270,17 @@ int fixed_can_represent(int32_t extent, int32_t feature, const char **why)
 	return 1;
 }
 
-void fixed_format(int32_t x, char *buf, size_t size)
+void fixed_format(int32_t x, int shift, char *buf, size_t size)
 {
-	uint32_t magnitude = x < 0 ? (uint32_t)(-(int64_t)x) : (uint32_t)x;
-	uint32_t fraction = (uint32_t)(((uint64_t)(magnitude & 0xFFFF) * 1000000 + 32768) >> 16);
-	uint32_t whole = magnitude >> 16;
+	/* In units of 2^-16, times 2^-shift: as 64 bits (a shift of up to 24 either way). */
+	uint64_t magnitude = x < 0 ? (uint64_t)(-(int64_t)x) : (uint64_t)x;
+	uint64_t whole, fraction;
+	if (shift < 0)
+		magnitude <<= (-shift > 24 ? 24 : -shift);
+	else
+		magnitude >>= (shift > 24 ? 24 : shift);
+	whole = magnitude >> 16;
+	fraction = ((magnitude & 0xFFFF) * 1000000 + 32768) >> 16;
 	if (fraction >= 1000000) {
 		whole++;
 		fraction -= 1000000;

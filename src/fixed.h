@@ -92,7 +92,8 @@ int fixed_length_shift(int32_t extent, int measured_shift);
  * 0 and *why when its dynamic range is too large for Q16.16. */
 int fixed_can_represent(int32_t extent, int32_t feature, const char **why);
 
-/* Writes x as a decimal with up to 6 fraction digits into buf (at least 16 bytes). */
-void fixed_format(int32_t x, char *buf, size_t size);
+/* Writes x / 2^shift as a decimal with 6 fraction digits into buf (at least 24 bytes):
+ * a scaled length in the scene's own units, which may be beyond Q16.16's range. */
+void fixed_format(int32_t x, int shift, char *buf, size_t size);
 
 #endif

@@ -926,22 +926,27 @@ static int parse_file_pass(scene *s, const char *path, int shift)
 
 int parse_scene_file(scene *s, const char *path)
 {
-	/* Floating point reads the file once. Fixed point reads it first at a coarse scale
-	 * that holds any coordinate, measures the scene, and reads it again at the scale
-	 * that fits its extent into Q16.16's range (REAL_FIRST_PASS_SHIFT, real_length_shift). */
+	/* Floating point reads the file once. Fixed point reads it first to measure it (at
+	 * scale 1, which keeps small scenes' detail, or if a length does not fit there at
+	 * the coarse REAL_FIRST_PASS_SHIFT that holds any coordinate), then again at the
+	 * scale that fits its extent into Q16.16's range (real_length_shift). */
 	int final_shift;
 	real extent, feature;
 	const char *why;
 	/* Test the macro, not a variable holding it: the condition is fixed per build, which
 	 * static analysis reports about a variable ("always false"). */
 	if (REAL_FIRST_PASS_SHIFT != 0) {
-		int shift = REAL_FIRST_PASS_SHIFT, ok;
+		int shift = 0, ok;
 		diag_set_sink(quiet, NULL);
 		ok = parse_file_pass(s, path, shift);
+		if (!ok) {
+			shift = REAL_FIRST_PASS_SHIFT;
+			ok = parse_file_pass(s, path, shift);
+		}
 		diag_set_sink(NULL, NULL);
 		if (!ok)
 			return parse_file_pass(s, path, shift); /* again, to report the error */
-		/* Every length read counts, also those of objects skipped at this coarse scale. */
+		/* Every length read counts, also those of objects skipped at this scale. */
 		final_shift = real_length_shift(s->longest_length, shift);
 	} else {
 		final_shift = 0;
@@ -952,8 +957,8 @@ int parse_scene_file(scene *s, const char *path)
 	scene_measure(s, &extent, &feature);
 	if (!real_can_represent(extent, feature, &why)) {
 		char e[32], f[32];
-		real_format(real_ldexp(extent, -final_shift), e, sizeof e);
-		real_format(real_ldexp(feature, -final_shift), f, sizeof f);
+		real_format(extent, final_shift, e, sizeof e);
+		real_format(feature, final_shift, f, sizeof f);
 		diag_error(path, 0, "cannot be rendered in %s: extent %s, smallest feature %s: %s",
 			   REAL_NAME, e, f, why);
 		return 0;

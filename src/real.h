@@ -106,7 +106,7 @@ typedef int64_t real2; /* Q32.32: squares and products of lengths */
 #define real_surface_offset(scale) ((real)16 + ((scale) >> 13))
 #define real_from_text(text, shift, out) fixed_from_text((text), (shift), (out))
 #define REAL_RANGE_TEXT "the range of Q16.16 fixed point"
-#define real_format(x, buf, size) fixed_format((x), (buf), (size))
+#define real_format(x, shift, buf, size) fixed_format((x), (shift), (buf), (size))
 #define real_ldexp(x, e) fixed_ldexp((x), (e))
 /* Pass 1 reads lengths at 2^-12 (up to 1.3e8 units) to find the scene's extent. */
 #define REAL_FIRST_PASS_SHIFT (-12)
@@ -136,7 +136,9 @@ static inline int real_from_text(const char *text, int shift, real *out)
 	return real_fabs(*out) <= REAL_INPUT_LIMIT ? REAL_TEXT_OK : REAL_TEXT_OUT_OF_RANGE;
 }
 #define REAL_RANGE_TEXT "+-1e12"
-#define real_format(x, buf, size) ((void)snprintf((buf), (size), "%g", (double)(x)))
+/* Writes x / 2^shift in decimal (shift is always 0 here). */
+#define real_format(x, shift, buf, size) \
+	((void)(shift), (void)snprintf((buf), (size), "%g", (double)(x)))
 /* Floating point represents any scene within the input limit: no scaling (shift 0),
  * and nothing is refused for its dynamic range. */
 #define REAL_FIRST_PASS_SHIFT 0

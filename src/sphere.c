@@ -70,7 +70,10 @@ int sphere_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h
 	if (h) {
 		h->t = t;
 		h->point = vec_madd(r->origin, t, r->dir);
-		h->normal = vec_div(vec_sub(h->point, s->center), s->radius);
+		/* Normalised rather than divided by r: a hit point a little off the surface
+		 * would otherwise give a normal that is not unit length, and the reflected ray
+		 * with it (the sphere test assumes unit directions). */
+		h->normal = vec_normalize(vec_sub(h->point, s->center));
 		h->shading = h->normal;
 	}
 	return 1;
