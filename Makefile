@@ -50,6 +50,9 @@ build/san/unit-tests: $(SRC) $(TEST_SRC) $(wildcard src/*.h tests/*.h)
 build/san/replay: $(LIB_SRC) tests/fuzz/fuzz_scene.c tests/fuzz/replay.c $(wildcard src/*.h)
 	@mkdir -p $(@D)
 	$(CC) $(RT_CFLAGS) $(SAN_FLAGS) -Isrc $(CPPFLAGS) -O1 -o $@ $(LIB_SRC) tests/fuzz/fuzz_scene.c tests/fuzz/replay.c $(LDLIBS) $(RT_LDLIBS)
+build/san/replay-fixed: $(LIB_SRC) tests/fuzz/fuzz_scene.c tests/fuzz/replay.c $(wildcard src/*.h)
+	@mkdir -p $(@D)
+	$(CC) $(RT_CFLAGS) $(SAN_FLAGS) -DRT_REAL_FIXED -Isrc $(CPPFLAGS) -O1 -o $@ $(LIB_SRC) tests/fuzz/fuzz_scene.c tests/fuzz/replay.c $(LDLIBS) $(RT_LDLIBS)
 
 # One source, several builds: the number types and the naive algorithm forms, each a
 # whole program built in one compiler call (build/rt-NAME).
@@ -81,24 +84,30 @@ build/rt-%: $(SRC) $(wildcard src/*.h)
 	@mkdir -p $(@D)
 	$(CC) $(WARN) -ffp-contract=off $(VARIANT_FLAGS_$*) $(CPPFLAGS) $(CFLAGS) -o $@ $(SRC) $(LDLIBS) $(RT_LDLIBS)
 
-test: rt build/unit-tests build/san/rt build/san/unit-tests build/san/replay \
+test: rt build/unit-tests build/san/rt build/san/unit-tests build/san/replay build/san/replay-fixed \
       build/unit-tests-float build/unit-tests-ref build/rt-fixed build/rt-ref
 	@sh tests/run.sh
 
-# Fuzzing with libFuzzer (clang): `make fuzz FUZZ_SECONDS=600`. New inputs collect in
-# build/fuzz/new; `make fuzz-merge` minimises them into tests/fuzz/corpus.
+# Fuzzing with libFuzzer (clang): `make fuzz FUZZ_SECONDS=600` (FUZZ_TYPE=fixed fuzzes
+# the Q16.16 build). New inputs collect in build/fuzz/new; `make fuzz-merge` minimises
+# them into tests/fuzz/corpus.
 FUZZ_SECONDS ?= 60
+FUZZ_TYPE ?= double
 FUZZ_CC ?= clang
 FUZZ_FLAGS = -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined -g -O1
-build/fuzz/fuzz-scene: $(LIB_SRC) tests/fuzz/fuzz_scene.c $(wildcard src/*.h)
+build/fuzz/fuzz-scene-%: $(LIB_SRC) tests/fuzz/fuzz_scene.c $(wildcard src/*.h)
 	@command -v $(FUZZ_CC) >/dev/null || { apt-get update && apt-get install -y clang; }
 	@mkdir -p $(@D)
-	$(FUZZ_CC) -std=c99 -Wall -Wextra -Werror -ffp-contract=off $(FUZZ_FLAGS) -Isrc -o $@ $(LIB_SRC) tests/fuzz/fuzz_scene.c -lm
+	$(FUZZ_CC) -std=c99 -Wall -Wextra -Werror -ffp-contract=off $(FUZZ_FLAGS) \
+		$(filter -D%,$(VARIANT_FLAGS_$*)) -Isrc -o $@ $(LIB_SRC) tests/fuzz/fuzz_scene.c -lm
+build/fuzz/fuzz-scene: build/fuzz/fuzz-scene-double
+	cp build/fuzz/fuzz-scene-double $@
 
-fuzz: build/fuzz/fuzz-scene
+fuzz: build/fuzz/fuzz-scene-$(FUZZ_TYPE)
 	@mkdir -p build/fuzz/new build/fuzz/crashes
-	build/fuzz/fuzz-scene -max_total_time=$(FUZZ_SECONDS) -max_len=65536 -timeout=10 \
-		-artifact_prefix=build/fuzz/crashes/ -dict=tests/fuzz/nff.dict build/fuzz/new tests/fuzz/corpus
+	build/fuzz/fuzz-scene-$(FUZZ_TYPE) -max_total_time=$(FUZZ_SECONDS) -max_len=65536 \
+		-timeout=10 -artifact_prefix=build/fuzz/crashes/ -dict=tests/fuzz/nff.dict \
+		build/fuzz/new tests/fuzz/corpus
 
 fuzz-merge: build/fuzz/fuzz-scene
 	build/fuzz/fuzz-scene -merge=1 -max_len=65536 tests/fuzz/corpus build/fuzz/new

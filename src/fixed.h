@@ -63,6 +63,16 @@ static inline int32_t fixed_div2(int64_t w, int32_t b)
 	return fixed_saturate(fixed_round_div(w, b));
 }
 
+/* w (Q32.32) times a (Q16.16) as Q32.32, saturating. */
+static inline int64_t fixed_scale2(int64_t w, int32_t a)
+{
+	int64_t high = w / 65536;
+	if (a != 0 && (high > INT64_MAX / (a < 0 ? -(int64_t)a : a) ||
+		       high < -INT64_MAX / (a < 0 ? -(int64_t)a : a)))
+		return (high < 0) != (a < 0) ? -INT64_MAX : INT64_MAX;
+	return high * a;
+}
+
 /* Rounded integer square root of a 64-bit number. */
 uint64_t fixed_isqrt64(uint64_t x);
 

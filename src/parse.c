@@ -924,7 +924,12 @@ static int parse_file_pass(scene *s, const char *path, int shift)
 	return ok;
 }
 
-int parse_scene_file(scene *s, const char *path)
+/* One pass over a source that can be read again from its start, at scale 2^shift. */
+typedef int (*pass_fn)(scene *s, const char *name, const void *source, int shift);
+
+/* Loads a scene from a re-readable source: once in floating point; in fixed point first
+ * to measure it, then at the scale that fits it, then checks it can be held. */
+static int load_scene(scene *s, const char *path, pass_fn pass, const void *source)
 {
 	/* Floating point reads the file once. Fixed point reads it first to measure it (at
 	 * scale 1, which keeps small scenes' detail, or if a length does not fit there at
@@ -938,20 +943,20 @@ int parse_scene_file(scene *s, const char *path)
 	if (REAL_FIRST_PASS_SHIFT != 0) {
 		int shift = 0, ok;
 		diag_set_sink(quiet, NULL);
-		ok = parse_file_pass(s, path, shift);
+		ok = pass(s, path, source, shift);
 		if (!ok) {
 			shift = REAL_FIRST_PASS_SHIFT;
-			ok = parse_file_pass(s, path, shift);
+			ok = pass(s, path, source, shift);
 		}
 		diag_set_sink(NULL, NULL);
 		if (!ok)
-			return parse_file_pass(s, path, shift); /* again, to report the error */
+			return pass(s, path, source, shift); /* again, to report the error */
 		/* Every length read counts, also those of objects skipped at this scale. */
 		final_shift = real_length_shift(s->longest_length, shift);
 	} else {
 		final_shift = 0;
 	}
-	if (!parse_file_pass(s, path, final_shift))
+	if (!pass(s, path, source, final_shift))
 		return 0;
 	s->length_shift = final_shift;
 	scene_measure(s, &extent, &feature);
@@ -964,4 +969,43 @@ int parse_scene_file(scene *s, const char *path)
 		return 0;
 	}
 	return 1;
+}
+
+static int file_pass(scene *s, const char *path, const void *source, int shift)
+{
+	(void)source;
+	return parse_file_pass(s, path, shift);
+}
+
+int parse_scene_file(scene *s, const char *path)
+{
+	return load_scene(s, path, file_pass, NULL);
+}
+
+/* A byte buffer read from its start on every pass. */
+typedef struct {
+	const unsigned char *data;
+	size_t size, at;
+} buffer_reader;
+
+static int read_buffer(void *ctx)
+{
+	buffer_reader *b = ctx;
+	return b->at < b->size ? b->data[b->at++] : -1;
+}
+
+static int buffer_pass(scene *s, const char *name, const void *source, int shift)
+{
+	buffer_reader b = *(const buffer_reader *)source;
+	b.at = 0;
+	return parse_pass(s, name, read_buffer, &b, shift);
+}
+
+int parse_scene_buffer(scene *s, const char *name, const void *data, size_t size)
+{
+	buffer_reader b;
+	b.data = data;
+	b.size = size;
+	b.at = 0;
+	return load_scene(s, name, buffer_pass, &b);
 }

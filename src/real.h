@@ -94,7 +94,7 @@ typedef int64_t real2; /* Q32.32: squares and products of lengths */
 #define real2_sqrt(w) fixed_sqrt2(w)
 #define real2_div(w, b) fixed_div2((w), (b))
 #define real2_ratio(a, b) fixed_ratio2((a), (b))
-#define real2_scale(w, a) ((w) / 65536 * (a))
+#define real2_scale(w, a) fixed_scale2((w), (a))
 /* Beyond any scaled scene's coordinates (4096): a hit point (4096 + 24000) and its
  * distance to a light (another 4096) still fit Q16.16's 32767. */
 #define REAL_FAR REAL_C(24000.0)

@@ -48,7 +48,11 @@ void scene_measure(const scene *s, real *extent, real *feature)
 			cover(extent, o->u.cone.base, r);
 			cover(extent, vec_madd(o->u.cone.base, o->u.cone.length, o->u.cone.axis), r);
 			*feature = real_min(*feature, r);
-			*feature = real_min(*feature, o->u.cone.length);
+			/* A steep cone (radius changing much faster than its length) is as fine
+			 * as its length over its slope. */
+			*feature = real_min(*feature,
+					    real_div(o->u.cone.length,
+						     real_max(REAL_C(1.0), real_fabs(o->u.cone.slope))));
 		} else if (o->kind == SHAPE_PLANE) {
 			*extent = real_max(*extent, real_fabs(o->u.plane.offset));
 		}

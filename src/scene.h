@@ -142,8 +142,9 @@ typedef struct {
 void scene_init(scene *s, const char *file);
 
 /* The scene's extent (largest coordinate of any object, light or the camera, in
- * magnitude) and its smallest feature (the smallest sphere or cone radius or cone
- * length; REAL_MAX when there is none): what decides whether a number type can hold it. */
+ * magnitude) and its smallest feature (the smallest sphere or cone radius, cone length,
+ * or a steep cone's length over its slope; REAL_MAX when there is none): what decides
+ * whether a number type can hold it. */
 void scene_measure(const scene *s, real *extent, real *feature);
 
 #endif

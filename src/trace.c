@@ -16,6 +16,16 @@
 #include "intersect.h"
 #include "optics.h"
 
+/* Colours are bounded so that sums of them (64 lights, a mirror and a refracted ray,
+ * four pixel corners) stay within fixed point's range; 256 is far above what an 8-bit
+ * pixel can show, whatever weight a path gives it. */
+#define COLOR_MAX REAL_C(256.0)
+
+static vec3 bounded(vec3 c)
+{
+	return vec_make(real_min(c.x, COLOR_MAX), real_min(c.y, COLOR_MAX), real_min(c.z, COLOR_MAX));
+}
+
 /* Mirror weights stay below 1 so two facing mirrors still fade out. */
 #define MIRROR_MAX REAL_C(0.99609375) /* 255/256 */
 
@@ -97,7 +107,7 @@ static vec3 shade_lights(tracer *t, const hit *h, const material *mat, vec3 mirr
 			 int level)
 {
 	const scene *s = t->scene;
-	vec3 sum = vec_mul(s->ambient, mat->color);
+	vec3 sum = bounded(vec_mul(s->ambient, mat->color));
 	int i;
 	for (i = 0; i < s->light_count; i++) {
 		const light *l = &s->lights[i];
@@ -132,10 +142,11 @@ static vec3 shade_lights(tracer *t, const hit *h, const material *mat, vec3 mirr
 		}
 		if (pass <= REAL_C(0.0))
 			continue;
-		sum = vec_add(sum, vec_scale(vec_mul(l->color, vec_madd(vec_make(highlight, highlight,
-										 highlight),
-									diffuse, mat->color)),
-					     pass));
+		sum = vec_add(sum, bounded(vec_scale(vec_mul(l->color,
+							      vec_madd(vec_make(highlight, highlight,
+										highlight),
+								       diffuse, mat->color)),
+						      pass)));
 	}
 	return sum;
 }
@@ -216,7 +227,7 @@ static vec3 trace_ray(tracer *t, const ray *r, int level, real weight, const med
 	if (absorbing)
 		color = vec_mul(color, vec_make(optics_beer(absorb->x, h.t), optics_beer(absorb->y, h.t),
 						optics_beer(absorb->z, h.t)));
-	return color;
+	return bounded(color);
 }
 
 vec3 tracer_eye(tracer *t, const ray *r, int *hit_object)

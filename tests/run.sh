@@ -36,6 +36,7 @@ set -- tests/fuzz/corpus/*
 [ -d tests/bad ] && set -- "$@" tests/bad/*.nff
 [ -d tests/good ] && set -- "$@" tests/good/*.nff
 tally fuzz-replay "$(./build/san/replay "$@" 2>&1)"
+tally fuzz-replay-fixed "$(./build/san/replay-fixed "$@" 2>&1)"
 for script in tests/cli.sh tests/golden.sh tests/bad.sh; do
 	[ -f "$script" ] || continue
 	name=$(basename "$script" .sh)

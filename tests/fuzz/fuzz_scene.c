@@ -15,17 +15,6 @@
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
-typedef struct {
-	const uint8_t *data;
-	size_t size, at;
-} memory_reader;
-
-static int read_memory(void *ctx)
-{
-	memory_reader *m = ctx;
-	return m->at < m->size ? m->data[m->at++] : -1;
-}
-
 static void quiet(void *ctx, const char *message)
 {
 	(void)ctx;
@@ -45,13 +34,9 @@ static tracer fuzz_tracer;
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-	memory_reader m;
 	camera cam;
-	m.data = data;
-	m.size = size;
-	m.at = 0;
 	diag_set_sink(quiet, NULL);
-	if (parse_scene(&fuzz_scene, "fuzz.nff", read_memory, &m)) {
+	if (parse_scene_buffer(&fuzz_scene, "fuzz.nff", data, size)) {
 #if RT_USE_BVH
 		bvh_build(&fuzz_scene);
 #endif
