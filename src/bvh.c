@@ -41,7 +41,8 @@ static int hedron_bounds(const scene *s, const object *o, vec3 *lo, vec3 *hi)
 {
 	halfspace planes[RT_MAX_HEDRON_PLANES + 6];
 	int count = o->u.hedron.count, i, j, k, m, corners = 0;
-	/* A third of REAL_FAR: three such terms in Cramer's rule below still fit fixed point. */
+	/* Beyond every coordinate, and a third of REAL_FAR so that three such terms in
+	 * Cramer's rule below still fit fixed point. */
 	const real far_away = real_div(REAL_FAR, REAL_C(3.0));
 	for (i = 0; i < count; i++)
 		planes[i] = s->planes[o->u.hedron.first + i];

@@ -12,11 +12,13 @@ int cone_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h)
 	/* Components of origin and direction perpendicular to the axis. */
 	vec3 fp = vec_madd(f, -oh, c->axis);
 	vec3 dp = vec_madd(r->dir, -dh, c->axis);
-	real radius_at_origin = c->base_radius + real_mul(c->slope, oh);
+	/* Saturating sums (real_add): a steep cone seen from far away takes these past fixed
+	 * point's range, where the test is meaningless anyway but must stay defined. */
+	real radius_at_origin = real_add(c->base_radius, real_mul(c->slope, oh));
 	real slope_dh = real_mul(c->slope, dh);
 	/* |fp + t dp|^2 = (radius_at_origin + slope dh t)^2, as a t^2 + 2 b t + cc = 0. */
-	real a = vec_dot(dp, dp) - real_mul(slope_dh, slope_dh); /* unitless */
-	real b = vec_dot(fp, dp) - real_mul(radius_at_origin, slope_dh);
+	real a = real_add(vec_dot(dp, dp), -real_mul(slope_dh, slope_dh)); /* unitless */
+	real b = real_add(vec_dot(fp, dp), -real_mul(radius_at_origin, slope_dh));
 	real2 cc = vec_dot2(fp, fp) - real_mul2(radius_at_origin, radius_at_origin);
 	real roots[2];
 	int i;
@@ -28,15 +30,16 @@ int cone_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h)
 		vec3 p, radial, normal;
 		if (!(t > tmin && t < tmax))
 			continue;
-		height = oh + real_mul(t, dh);
+		height = real_add(oh, real_mul(t, dh));
 		/* The quadric is a double cone: keep the part between the two end circles. */
 		if (height < REAL_C(0.0) || height > c->length)
 			continue;
 		p = vec_madd(r->origin, t, r->dir);
 		radial = vec_madd(vec_sub(p, c->base), -height, c->axis);
 		/* Gradient of |radial|^2 - r(h)^2, halved: outward on the side wall. */
-		normal = vec_madd(radial, -real_mul(c->base_radius + real_mul(c->slope, height),
-						    c->slope),
+		normal = vec_madd(radial,
+				  -real_mul(real_add(c->base_radius, real_mul(c->slope, height)),
+					    c->slope),
 				  c->axis);
 		normal = vec_normalize(normal);
 		/* At a pointed tip the radial part and the radius are both 0, so is the

@@ -12,6 +12,14 @@ static void stderr_sink(void *ctx, const char *message)
 
 static diag_sink_fn current_sink = stderr_sink;
 static void *current_ctx;
+static int muted;
+
+int diag_mute(int on)
+{
+	int was = muted;
+	muted = on;
+	return was;
+}
 
 void diag_set_sink(diag_sink_fn sink, void *ctx)
 {
@@ -50,7 +58,8 @@ static void emit(const char *file, int line, const char *kind, const char *fmt, 
 		used = used + (size_t)n + 2 >= sizeof message ? sizeof message - 2 : used + (size_t)n;
 	message[used] = '\n';
 	message[used + 1] = '\0';
-	current_sink(current_ctx, message);
+	if (!muted)
+		current_sink(current_ctx, message);
 }
 
 void diag_error(const char *file, int line, const char *fmt, ...)

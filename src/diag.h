@@ -10,6 +10,9 @@
 typedef void (*diag_sink_fn)(void *ctx, const char *message);
 void diag_set_sink(diag_sink_fn sink, void *ctx);
 
+/* Silences all messages while on (for a trial pass); returns the previous setting. */
+int diag_mute(int on);
+
 #if defined(__GNUC__)
 #define RT_PRINTF(f, a) __attribute__((format(printf, f, a)))
 #else

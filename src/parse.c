@@ -900,12 +900,6 @@ static int read_stdio(void *ctx)
 	return c == EOF ? -1 : c;
 }
 
-static void quiet(void *ctx, const char *message)
-{
-	(void)ctx;
-	(void)message;
-}
-
 /* Parses the file once at length scale 2^shift; messages go where diag sends them. */
 static int parse_file_pass(scene *s, const char *path, int shift)
 {
@@ -941,14 +935,13 @@ static int load_scene(scene *s, const char *path, pass_fn pass, const void *sour
 	/* Test the macro, not a variable holding it: the condition is fixed per build, which
 	 * static analysis reports about a variable ("always false"). */
 	if (REAL_FIRST_PASS_SHIFT != 0) {
-		int shift = 0, ok;
-		diag_set_sink(quiet, NULL);
+		int shift = 0, ok, was_muted = diag_mute(1);
 		ok = pass(s, path, source, shift);
 		if (!ok) {
 			shift = REAL_FIRST_PASS_SHIFT;
 			ok = pass(s, path, source, shift);
 		}
-		diag_set_sink(NULL, NULL);
+		diag_mute(was_muted);
 		if (!ok)
 			return pass(s, path, source, shift); /* again, to report the error */
 		/* Every length read counts, also those of objects skipped at this scale. */

@@ -79,6 +79,7 @@ typedef int64_t real2; /* Q32.32: squares and products of lengths */
 #define REAL_C(x) ((real)((x) * 65536.0 + ((x) < 0 ? -0.5 : 0.5)))
 #define REAL_MAX ((real)0x7FFFFFFF)
 #define real_mul(a, b) fixed_mul((a), (b))
+#define real_add(a, b) fixed_saturate((int64_t)(a) + (b))
 #define real_dot3(ax, ay, az, bx, by, bz) fixed_dot3((ax), (ay), (az), (bx), (by), (bz))
 #define real_div(a, b) fixed_div((a), (b))
 #define real_sqrt(a) fixed_sqrt(a)
@@ -95,8 +96,9 @@ typedef int64_t real2; /* Q32.32: squares and products of lengths */
 #define real2_div(w, b) fixed_div2((w), (b))
 #define real2_ratio(a, b) fixed_ratio2((a), (b))
 #define real2_scale(w, a) fixed_scale2((w), (a))
-/* Beyond any scaled scene's coordinates (4096): a hit point (4096 + 24000) and its
- * distance to a light (another 4096) still fit Q16.16's 32767. */
+/* Beyond any scaled scene's coordinates (4096): an infinite plane is seen out to six
+ * times the scene's extent. Hit points out there are within range (4096 + 24000), and
+ * the vector arithmetic from them saturates (real_add) rather than overflows. */
 #define REAL_FAR REAL_C(24000.0)
 /* Absolute precision: a hit point is good to a couple of LSB wherever it is. */
 /* Directions are Q16.16, short of unit length by up to 2^-16, so a hit point drifts off
@@ -156,6 +158,7 @@ static inline real real_ldexp_(real x, int e)
 }
 #define REAL_FIXED 0
 #define real_mul(a, b) ((a) * (b))
+#define real_add(a, b) ((a) + (b))
 #define real_div(a, b) ((a) / (b))
 #define real_dot3(ax, ay, az, bx, by, bz) ((ax) * (bx) + (ay) * (by) + (az) * (bz))
 #define real_from_int(i) ((real)(i))

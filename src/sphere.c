@@ -11,7 +11,7 @@ int solve_quadratic(real a, real b, real2 c, real2 discriminant, real *t0, real 
 	if (!(discriminant >= 0))
 		return 0;
 	root = real2_sqrt(discriminant);
-	q = b >= REAL_C(0.0) ? -(b + root) : root - b;
+	q = b >= REAL_C(0.0) ? -real_add(b, root) : real_add(root, -b);
 	/* q = 0 only when b = 0 and the discriminant is 0: a tangent at the origin (S19). */
 	if (q == REAL_C(0.0)) {
 		if (a == REAL_C(0.0))

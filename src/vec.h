@@ -19,8 +19,18 @@ static inline vec3 vec_make(real x, real y, real z)
 	return v;
 }
 
-static inline vec3 vec_add(vec3 a, vec3 b) { return vec_make(a.x + b.x, a.y + b.y, a.z + b.z); }
-static inline vec3 vec_sub(vec3 a, vec3 b) { return vec_make(a.x - b.x, a.y - b.y, a.z - b.z); }
+/* Vector sums saturate in fixed point (real_add): a ray from far out on an infinite
+ * plane may meet coordinates whose exact sum no longer fits, and wrapping would be
+ * undefined behaviour. In floating point real_add is plain +. */
+static inline vec3 vec_add(vec3 a, vec3 b)
+{
+	return vec_make(real_add(a.x, b.x), real_add(a.y, b.y), real_add(a.z, b.z));
+}
+
+static inline vec3 vec_sub(vec3 a, vec3 b)
+{
+	return vec_make(real_add(a.x, -b.x), real_add(a.y, -b.y), real_add(a.z, -b.z));
+}
 static inline vec3 vec_neg(vec3 a) { return vec_make(-a.x, -a.y, -a.z); }
 
 static inline vec3 vec_scale(vec3 a, real s)
@@ -37,7 +47,8 @@ static inline vec3 vec_mul(vec3 a, vec3 b)
 /* a + s*b: a point moved along a direction, or a weighted colour sum. */
 static inline vec3 vec_madd(vec3 a, real s, vec3 b)
 {
-	return vec_make(a.x + real_mul(s, b.x), a.y + real_mul(s, b.y), a.z + real_mul(s, b.z));
+	return vec_make(real_add(a.x, real_mul(s, b.x)), real_add(a.y, real_mul(s, b.y)),
+			real_add(a.z, real_mul(s, b.z)));
 }
 
 static inline real vec_dot(vec3 a, vec3 b)
