@@ -12,36 +12,15 @@
 # colour, a missing light, a shifted or leaking edge - either moves some channel by
 # more than 2 or touches far more than 0.5% of the pixels.
 # See LICENSE for copyright and licence.
+import os
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from netpbm import read_ppm  # noqa: E402
 
 MAX_CHANNEL_DIFF = 2      # largest allowed difference of one channel, in 8-bit codes
 MAX_DIFF_FRACTION = 0.005  # largest allowed fraction of pixels that differ at all
 
-
-def read_ppm(path):
-    """Returns (width, height, rgb bytes) of a P6 PPM with maxval 255."""
-    with open(path, "rb") as f:
-        data = f.read()
-    fields, pos = [], 0
-    while len(fields) < 4:
-        # Header tokens are separated by whitespace; '#' starts a comment line.
-        while data[pos:pos + 1].isspace():
-            pos += 1
-        if data[pos:pos + 1] == b"#":
-            pos = data.index(b"\n", pos) + 1
-            continue
-        start = pos
-        while pos < len(data) and not data[pos:pos + 1].isspace():
-            pos += 1
-        fields.append(data[start:pos])
-    pos += 1  # exactly one whitespace byte before the samples
-    if fields[0] != b"P6" or fields[3] != b"255":
-        raise ValueError("not a binary PPM with maxval 255")
-    width, height = int(fields[1]), int(fields[2])
-    pixels = data[pos:]
-    if len(pixels) != 3 * width * height:
-        raise ValueError("%d bytes of samples, expected %d" % (len(pixels), 3 * width * height))
-    return width, height, pixels
 
 
 def compare(got, expected):

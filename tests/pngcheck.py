@@ -2,9 +2,13 @@
 # compares its pixels with a binary PPM's: exit 0 when identical.
 # Usage: python3 tests/pngcheck.py IMAGE.png IMAGE.ppm
 # See LICENSE for copyright and licence.
+import os
 import struct
 import sys
 import zlib
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from netpbm import read_ppm  # noqa: E402
 
 
 def read_png(path):
@@ -44,20 +48,6 @@ def read_png(path):
         out += line
         prev = line
     return width, height, bytes(out)
-
-
-def read_ppm(path):
-    data = open(path, 'rb').read()
-    fields, pos = [], 0
-    while len(fields) < 4:
-        while data[pos:pos + 1].isspace():
-            pos += 1
-        start = pos
-        while not data[pos:pos + 1].isspace():
-            pos += 1
-        fields.append(data[start:pos])
-    width, height = int(fields[1]), int(fields[2])
-    return width, height, data[pos + 1:pos + 1 + width * height * 3]
 
 
 if __name__ == '__main__':
