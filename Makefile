@@ -74,6 +74,13 @@ ALGORITHMS = sphere-textbook hedron-per-face offset-fixed float-textbook float-p
 
 variants: $(TYPES:%=build/rt-%)
 
+# The same strict warnings with clang (installed with apt-get if missing), every type.
+build/clang/rt-%: $(SRC) $(wildcard src/*.h)
+	@command -v clang >/dev/null || { apt-get update && apt-get install -y clang; }
+	@mkdir -p $(@D)
+	clang $(WARN) -ffp-contract=off $(VARIANT_FLAGS_$*) -O2 -o $@ $(SRC) -lm
+check-clang: $(TYPES:%=build/clang/rt-%)
+
 # The unit tests in every number type (each type's tolerances are in the tests).
 build/unit-tests-%: $(LIB_SRC) $(TEST_SRC) $(wildcard src/*.h tests/*.h)
 	@mkdir -p $(@D)
@@ -146,6 +153,6 @@ uninstall:
 clean:
 	rm -rf build rt
 
-.PHONY: all test install uninstall clean fuzz fuzz-merge variants algorithms lint
+.PHONY: all test install uninstall clean fuzz fuzz-merge variants algorithms check-clang lint
 
 -include $(OBJ:.o=.d) $(TEST_OBJ:.o=.d)
