@@ -532,9 +532,10 @@ static vec3 newell_normal(const vec3 *v, int count)
 	int i;
 	for (i = 0; i < count; i++) {
 		vec3 a = v[i], b = v[i + 1 == count ? 0 : i + 1];
-		nx += real_mul2(a.y - b.y, a.z + b.z);
-		ny += real_mul2(a.z - b.z, a.x + b.x);
-		nz += real_mul2(a.x - b.x, a.y + b.y);
+		/* Saturating: the measuring pass reads coordinates up to fixed point's limit. */
+		nx += real_mul2(real_add(a.y, -b.y), real_add(a.z, b.z));
+		ny += real_mul2(real_add(a.z, -b.z), real_add(a.x, b.x));
+		nz += real_mul2(real_add(a.x, -b.x), real_add(a.y, b.y));
 	}
 	largest = real_max(real_max(nx < 0 ? -nx : nx, ny < 0 ? -ny : ny), nz < 0 ? -nz : nz);
 	if (!(largest > 0))

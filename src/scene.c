@@ -22,7 +22,7 @@ void scene_init(scene *s, const char *file)
 /* Grows *extent to cover every coordinate of p, and r beyond it. */
 static void cover(real *extent, vec3 p, real r)
 {
-	*extent = real_max(*extent, vec_max_abs(p) + r);
+	*extent = real_max(*extent, real_add(vec_max_abs(p), r));
 }
 
 void scene_measure(const scene *s, real *extent, real *feature)
