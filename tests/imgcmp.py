@@ -15,7 +15,7 @@
 import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'tools'))
 from netpbm import read_ppm  # noqa: E402
 
 MAX_CHANNEL_DIFF = 2      # largest allowed difference of one channel, in 8-bit codes

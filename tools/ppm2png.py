@@ -2,33 +2,18 @@
 # ppm2png.py - converts rt's binary PPM (P6, maxval 255) to PNG, standard library only.
 # Usage: python3 tools/ppm2png.py IN.ppm OUT.png   (IN may be - for standard input)
 # See LICENSE for copyright and licence.
+import os
 import struct
 import sys
 import zlib
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from netpbm import parse_netpbm  # noqa: E402
+
 
 def read_ppm(data):
-    """Returns (width, height, rgb bytes) of a P6 image with maxval 255."""
-    fields, pos = [], 0
-    while len(fields) < 4:
-        # Header tokens are separated by whitespace; '#' starts a comment line.
-        while data[pos:pos + 1].isspace():
-            pos += 1
-        if data[pos:pos + 1] == b"#":
-            pos = data.index(b"\n", pos) + 1
-            continue
-        start = pos
-        while pos < len(data) and not data[pos:pos + 1].isspace():
-            pos += 1
-        fields.append(data[start:pos])
-    pos += 1  # exactly one whitespace byte before the samples
-    if fields[0] != b"P6" or int(fields[3]) != 255:
-        raise ValueError("not a P6 PPM with maxval 255")
-    width, height = int(fields[1]), int(fields[2])
-    pixels = data[pos:pos + 3 * width * height]
-    if len(pixels) != 3 * width * height:
-        raise ValueError("PPM is truncated")
-    return width, height, pixels
+    """(width, height, RGB bytes) of P6 image bytes with maxval 255."""
+    return parse_netpbm(data, b"P6", 255, 3)
 
 
 def png_chunk(kind, body):

@@ -1,12 +1,10 @@
 # netpbm.py - reads the binary netpbm images rt writes: P6 (RGB, maxval 255) and P5
-# (16-bit object IDs from --ids, maxval 65535). Shared by the test scripts.
+# (16-bit object IDs from --ids, maxval 65535). Shared by the tools and the test scripts.
 # See LICENSE for copyright and licence.
 
 
-def read_netpbm(path, magic, maxval, channels):
-    """Returns (width, height, sample bytes) of a binary netpbm image of this kind."""
-    with open(path, "rb") as f:
-        data = f.read()
+def parse_netpbm(data, magic, maxval, channels):
+    """Returns (width, height, sample bytes) of binary netpbm image bytes of this kind."""
     fields, pos = [], 0
     while len(fields) < 4:
         # Header tokens are separated by whitespace; '#' starts a comment line.
@@ -28,6 +26,12 @@ def read_netpbm(path, magic, maxval, channels):
     if len(samples) != size:
         raise ValueError("%d bytes of samples, expected %d" % (len(samples), size))
     return width, height, samples
+
+
+def read_netpbm(path, magic, maxval, channels):
+    """The same for an image file."""
+    with open(path, "rb") as f:
+        return parse_netpbm(f.read(), magic, maxval, channels)
 
 
 def read_ppm(path):
