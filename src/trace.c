@@ -67,7 +67,10 @@ vec3 trace_offset(vec3 p, vec3 side, real t)
 	(void)t;
 	return vec_madd(p, REAL_C(1e-4), side);
 #else
-	real scale = real_max(REAL_C(1.0), real_max(vec_max_abs(p), real_fabs(t)));
+	/* The hit point's rounding error scales with its own size and the ray's length, not
+	 * with the unit of length: a scene modelled in metres with 50 um parts needs offsets
+	 * far below 1e-4. The small floor keeps a point at the origin off its surface. */
+	real scale = real_max(REAL_C(0.0009765625), real_max(vec_max_abs(p), real_fabs(t)));
 	return vec_madd(p, real_surface_offset(scale), side);
 #endif
 }
