@@ -1,5 +1,10 @@
 /* plane.c - ray/infinite plane intersection (an rt extension to NFF).
- * See LICENSE for copyright and licence. */
+ * An infinite plane reaches the horizon, beyond the farthest distance a number type
+ * holds comfortably (REAL_FAR: 1e15 in floating point, six scene extents in Q16.16): a
+ * ray that meets it farther away meets it "at the horizon", at 0.99 REAL_FAR along the
+ * ray. The point is then off the plane, but so far away that its lighting is that of
+ * the plane's far end; the tracer sends no rays from it (they would start beyond the
+ * range fixed point can compute with). See LICENSE for copyright and licence. */
 #include "shape.h"
 
 int plane_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h)
@@ -10,6 +15,8 @@ int plane_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h)
 	if (denom == REAL_C(0.0))
 		return 0;
 	t = real_div(pl->offset - vec_dot(pl->normal, r->origin), denom);
+	if (t > HORIZON_T)
+		t = HORIZON_T;
 	if (!(t > tmin && t < tmax))
 		return 0;
 	if (h) {

@@ -14,6 +14,10 @@ typedef struct {
 	vec3 dir; /* unit length */
 } ray;
 
+/* Where an infinite plane meets a ray that reaches it beyond REAL_FAR: the horizon
+ * (plane.c). A hit this far is shaded but sends no further rays. */
+#define HORIZON_T real_mul(REAL_FAR, REAL_C(0.99))
+
 typedef struct {
 	real t;
 	vec3 point;

@@ -116,7 +116,7 @@ static vec3 shade_lights(tracer *t, const hit *h, const material *mat, vec3 mirr
 		const light *l = &s->lights[i];
 		vec3 to_light = vec_sub(l->position, h->point);
 		real distance = vec_length(to_light), diffuse, highlight, pass;
-		vec3 dir;
+		vec3 dir, lit;
 		ray shadow;
 		if (!(distance > REAL_C(0.0)))
 			continue;
@@ -133,6 +133,14 @@ static vec3 shade_lights(tracer *t, const hit *h, const material *mat, vec3 mirr
 		}
 		if (!(diffuse > REAL_C(0.0)) && !(highlight > REAL_C(0.0)))
 			continue;
+		/* The light's full contribution: diffuse in the surface colour, white highlight. */
+		lit = bounded(vec_mul(l->color, vec_madd(vec_make(highlight, highlight, highlight),
+							 diffuse, mat->color)));
+		/* At the horizon nothing in the scene is between the point and the light. */
+		if (!(h->t < HORIZON_T)) {
+			sum = vec_add(sum, lit);
+			continue;
+		}
 		shadow.origin = trace_offset(h->point, h->normal, h->t);
 		shadow.dir = dir;
 		t->stats.shadow_rays++;
@@ -145,11 +153,7 @@ static vec3 shade_lights(tracer *t, const hit *h, const material *mat, vec3 mirr
 		}
 		if (pass <= REAL_C(0.0))
 			continue;
-		sum = vec_add(sum, bounded(vec_scale(vec_mul(l->color,
-							      vec_madd(vec_make(highlight, highlight,
-										highlight),
-								       diffuse, mat->color)),
-						      pass)));
+		sum = vec_add(sum, vec_scale(lit, pass));
 	}
 	return sum;
 }
@@ -222,6 +226,8 @@ static vec3 trace_ray(tracer *t, const ray *r, int level, real weight, const med
 		mirror_dir = optics_reflect(r->dir, h.normal);
 
 	color = shade_lights(t, &h, mat, mirror_dir, level);
+	if (!(h.t < HORIZON_T))
+		return bounded(color); /* no rays from the horizon */
 	ks = real_min(mat->ks, MIRROR_MAX);
 	if (ks > REAL_C(0.0) && level < t->depth && real_mul(weight, ks) >= t->cutoff)
 		color = vec_add(color, trace_mirror(t, &h, mirror_dir, level, weight, ks, m));
