@@ -4,9 +4,8 @@
  * Q16.16 result. See LICENSE for copyright and licence. */
 #include "fixed.h"
 
-/* Only the fixed build uses this file; other builds compile it to nothing. */
-#if defined(RT_REAL_FIXED)
-
+/* Plain integer code: every build compiles it (the unit tests check it in each), and
+ * only the fixed build's `real` uses it. */
 #include <stdio.h>
 
 uint64_t fixed_isqrt64(uint64_t x)
@@ -137,7 +136,10 @@ int32_t fixed_tan(int32_t x)
 	return fixed_saturate(fixed_round_div(s * 65536, c));
 }
 
-int32_t fixed_parse(const char *s, char **end, int shift, int *overflow)
+/* Mantissas keep 18 significant digits (below 2^60). */
+#define MANTISSA_LIMIT ((uint64_t)100000000000000000)
+
+int32_t fixed_parse(const char *s, const char **end, int shift, int *overflow)
 {
 	const char *p = s;
 	uint64_t mantissa = 0;
@@ -148,21 +150,21 @@ int32_t fixed_parse(const char *s, char **end, int shift, int *overflow)
 		negative = *p++ == '-';
 	/* Up to 18 significant digits; later ones only move the decimal point. */
 	for (; *p >= '0' && *p <= '9'; p++, digits++) {
-		if (mantissa < 100000000000000000ULL)
+		if (mantissa < MANTISSA_LIMIT)
 			mantissa = mantissa * 10 + (uint64_t)(*p - '0');
 		else
 			exponent++;
 	}
 	if (*p == '.') {
 		for (p++; *p >= '0' && *p <= '9'; p++, digits++) {
-			if (mantissa < 100000000000000000ULL) {
+			if (mantissa < MANTISSA_LIMIT) {
 				mantissa = mantissa * 10 + (uint64_t)(*p - '0');
 				exponent--;
 			}
 		}
 	}
 	if (!digits) {
-		*end = (char *)(uintptr_t)s;
+		*end = s;
 		return 0;
 	}
 	if (*p == 'e' || *p == 'E') {
@@ -178,7 +180,7 @@ int32_t fixed_parse(const char *s, char **end, int shift, int *overflow)
 			p = q;
 		}
 	}
-	*end = (char *)(uintptr_t)p;
+	*end = p;
 	if (mantissa == 0)
 		return 0;
 	/* value = mantissa * 10^exponent * 2^binary, kept within 63 bits throughout. */
@@ -214,7 +216,7 @@ int32_t fixed_parse(const char *s, char **end, int shift, int *overflow)
 int fixed_from_text(const char *text, int shift, int32_t *out)
 {
 	const char *p = text + (*text == '+' || *text == '-');
-	char *end;
+	const char *end;
 	int overflow;
 	/* NaN and infinity, as strtod would read them: not finite (status 2). */
 	if ((p[0] == 'n' || p[0] == 'N') || (p[0] == 'i' || p[0] == 'I')) {
@@ -288,8 +290,3 @@ void fixed_format(int32_t x, int shift, char *buf, size_t size)
 	snprintf(buf, size, "%s%lu.%06lu", x < 0 ? "-" : "", (unsigned long)whole,
 		 (unsigned long)fraction);
 }
-
-#else
-/* ISO C wants at least one declaration in a file. */
-typedef int fixed_unused;
-#endif

@@ -86,7 +86,7 @@ int32_t fixed_tan(int32_t x);       /* tan x for 0 <= x < pi/2 (radians) */
 /* Reads a decimal number (sign, digits, point, exponent) as Q16.16 times 2^shift,
  * rounded; *end is set after the last character used (to s when there is no number).
  * *overflow is set when the value does not fit. */
-int32_t fixed_parse(const char *s, char **end, int shift, int *overflow);
+int32_t fixed_parse(const char *s, const char **end, int shift, int *overflow);
 
 /* A whole token as Q16.16 times 2^shift: 0 ok, 1 not a number, 2 out of range. */
 int fixed_from_text(const char *text, int shift, int32_t *out);

@@ -866,6 +866,7 @@ static parser the_parser;
 static int parse_pass(scene *s, const char *file, read_fn read, void *ctx, int length_shift)
 {
 	parser *p = &the_parser;
+	int ok;
 	memset(p, 0, sizeof *p);
 	scene_init(s, file);
 	p->s = s;
@@ -878,16 +879,20 @@ static int parse_pass(scene *s, const char *file, read_fn read, void *ctx, int l
 	p->lx.pending = NO_BYTE;
 	p->lx.at_start = 1;
 	p->lx.length_shift = length_shift;
-	while (next_token(&p->lx))
-		if (!parse_entity(p))
-			return 0;
-	if (p->lx.failed)
-		return 0;
-	if (!p->view_line)
-		return fail(&p->lx, p->lx.last_line, "no view: a scene needs a 'v' entity");
-	finish_lights(p);
-	s->longest_length = p->lx.longest;
-	return 1;
+	ok = 1;
+	while (ok && next_token(&p->lx))
+		ok = parse_entity(p);
+	if (ok && !p->lx.failed && !p->view_line)
+		fail(&p->lx, p->lx.last_line, "no view: a scene needs a 'v' entity");
+	ok = ok && !p->lx.failed;
+	if (ok) {
+		finish_lights(p);
+		s->longest_length = p->lx.longest;
+	}
+	/* The reader belongs to the caller and may live on its stack: forget it. */
+	p->lx.read = NULL;
+	p->lx.ctx = NULL;
+	return ok;
 }
 
 int parse_scene(scene *s, const char *file, read_fn read, void *ctx)

@@ -41,5 +41,6 @@ void suite_properties(void);
 void suite_parse(void);
 void suite_image(void);
 void suite_output(void);
+void suite_fixed(void);
 
 #endif

@@ -1,0 +1,114 @@
+/* test_fixed.c - the Q16.16 arithmetic of fixed.c against numerics.md's fixed-point cases
+ * (Q01-Q04, B06). Integer code, so it runs in every build.
+ * See LICENSE for copyright and licence. */
+#include <math.h>
+
+#include "fixed.h"
+#include "test.h"
+
+#define Q(x) ((int32_t)((x) * 65536.0 + ((x) < 0 ? -0.5 : 0.5)))
+
+static double to_double(int32_t x) { return x / 65536.0; }
+
+static void test_products(void)
+{
+	/* Q01: 181^2 fits Q16.16, 182^2 does not; the 64-bit square (real2) holds both. */
+	CHECK_INT(fixed_mul(Q(181.0), Q(181.0)), Q(32761.0));
+	CHECK_INT(fixed_mul(Q(182.0), Q(182.0)), FIXED_MAX); /* saturates, never wraps */
+	CHECK((int64_t)Q(182.0) * Q(182.0) == (int64_t)33124 << 32);
+	/* Rounding to nearest: 0.5 LSB products round away, -0.5 LSB too. */
+	CHECK_INT(fixed_mul(1, 32768), 1);
+	CHECK_INT(fixed_mul(Q(-1.5), Q(2.0)), Q(-3.0));
+	CHECK_INT(fixed_div(Q(1.0), Q(3.0)), 21845);
+	CHECK_INT(fixed_div(Q(-1.0), Q(3.0)), -21845);
+	CHECK_INT(fixed_div(Q(5.0), 0), FIXED_MAX);
+	/* Dot products are summed in 64 bits, rounded once, and saturate. */
+	CHECK_INT(fixed_dot3(Q(100.0), Q(100.0), Q(100.0), Q(100.0), Q(100.0), Q(100.0)),
+		  Q(30000.0));
+	CHECK_INT(fixed_dot3(Q(200.0), Q(200.0), Q(200.0), Q(200.0), Q(200.0), Q(200.0)),
+		  FIXED_MAX);
+	/* Q02: r = 1e-3 is 66 LSB; its square vanishes in Q16.16 but is 4356 in Q32.32. */
+	CHECK_INT(Q(0.001), 66);
+	CHECK_INT(fixed_mul(Q(0.001), Q(0.001)), 0);
+	CHECK((int64_t)Q(0.001) * Q(0.001) == 4356);
+}
+
+static void test_roots(void)
+{
+	int32_t third;
+	/* Q03: sqrt 2 rounds to 92682 (a truncating root gives 92681). */
+	CHECK_INT(fixed_sqrt(Q(2.0)), 92682);
+	CHECK_INT(fixed_sqrt(Q(4.0)), Q(2.0));
+	CHECK_INT(fixed_sqrt(0), 0);
+	CHECK_INT(fixed_sqrt(-5), 0);
+	CHECK(fixed_isqrt64((uint64_t)1 << 62) == (uint64_t)1 << 31);
+	CHECK(fixed_isqrt64(24) == 5); /* 4.899 rounds up */
+	CHECK_INT(fixed_sqrt2((int64_t)9 << 32), Q(3.0));
+	/* Q04: (1,1,1)/sqrt 3 has 37837 LSB per component. */
+	third = fixed_div(Q(1.0), fixed_sqrt(Q(3.0)));
+	CHECK_INT(third, 37837);
+}
+
+static void test_exp_pow_tan(void)
+{
+	int i;
+	double worst = 0.0;
+	/* B06: e^-x in Q16.16 is within 1 LSB of the rounded exact value (x = 1, 5, 10), and
+	 * e^-11.78 is about 1 LSB. */
+	CHECK_NEAR(fixed_exp(Q(-1.0)), exp(-1.0) * 65536.0, 1.0);
+	CHECK_NEAR(fixed_exp(Q(-5.0)), exp(-5.0) * 65536.0, 1.0);
+	CHECK_NEAR(fixed_exp(Q(-10.0)), exp(-10.0) * 65536.0, 1.0);
+	CHECK_INT(fixed_exp(Q(-10.0)), 3);
+	CHECK(fixed_exp(Q(-11.78)) <= 1);
+	CHECK_INT(fixed_exp(0), Q(1.0));
+	CHECK_INT(fixed_exp(Q(-30.0)), 0);
+	for (i = 0; i <= 200; i++) {
+		double x = -i * 0.05;
+		double err = fabs(to_double(fixed_exp(Q(x))) - exp(x));
+		worst = err > worst ? err : worst;
+	}
+	CHECK(worst < 2.0 / 65536.0);
+	/* x^y for the Phong exponents rt meets, on [0, 1]. */
+	CHECK_NEAR(to_double(fixed_pow(Q(0.5), Q(2.0))), 0.25, 2.0 / 65536.0);
+	CHECK_NEAR(to_double(fixed_pow(Q(0.9), Q(45.28))), pow(to_double(Q(0.9)), 45.28),
+		   4.0 / 65536.0);
+	CHECK_INT(fixed_pow(0, Q(3.0)), 0);
+	CHECK_INT(fixed_pow(Q(0.3), 0), Q(1.0));
+	/* tan of half the field of view, to a few LSB. */
+	CHECK_NEAR(to_double(fixed_tan(Q(0.4537856))), tan(to_double(Q(0.4537856))),
+		   2.0 / 65536.0);
+	CHECK_NEAR(to_double(fixed_tan(Q(1.0))), tan(1.0), 8.0 / 65536.0);
+}
+
+static void test_parsing(void)
+{
+	int32_t v;
+	CHECK_INT(fixed_from_text("1", 0, &v), 0);
+	CHECK_INT(v, Q(1.0));
+	CHECK_INT(fixed_from_text("-2.25", 0, &v), 0);
+	CHECK_INT(v, Q(-2.25));
+	CHECK_INT(fixed_from_text("1e-3", 0, &v), 0);
+	CHECK_INT(v, 66);
+	CHECK_INT(fixed_from_text("1.11022e-16", 0, &v), 0);
+	CHECK_INT(v, 0);
+	/* A length scale: 0.006 read at 2^8. */
+	CHECK_INT(fixed_from_text("0.006", 8, &v), 0);
+	CHECK_INT(v, 100663);
+	CHECK_INT(fixed_from_text("32768", 0, &v), 3); /* out of range */
+	CHECK_INT(fixed_from_text("1e99999", 0, &v), 3);
+	CHECK_INT(fixed_from_text("nan", 0, &v), 2);
+	CHECK_INT(fixed_from_text("-Inf", 0, &v), 2);
+	CHECK_INT(fixed_from_text("1.0x", 0, &v), 1);
+	CHECK_INT(fixed_from_text("", 0, &v), 1);
+	/* Scaling a scene: the extent ends up in 2048 .. 4096. */
+	CHECK_INT(fixed_length_shift(Q(12.0), 0), 8);
+	CHECK_INT(fixed_length_shift(Q(100.0), -12), -7);
+}
+
+void suite_fixed(void)
+{
+	test_products();
+	test_roots();
+	test_exp_pow_tan();
+	test_parsing();
+}
