@@ -102,12 +102,7 @@ static int ppm_end(sink *self)
 
 void ppm_sink_init(ppm_sink *p, write_fn write, void *ctx)
 {
-	p->base.begin = ppm_begin;
-	p->base.row = ppm_row;
-	p->base.end = ppm_end;
-	p->base.write = write;
-	p->base.ctx = ctx;
-	p->base.error = NULL;
+	sink_init(&p->base, ppm_begin, ppm_row, ppm_end, write, ctx);
 	p->width = 0;
 }
 

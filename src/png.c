@@ -196,12 +196,7 @@ static int png_end(sink *self)
 
 void png_sink_init(png_sink *p, write_fn write, void *ctx)
 {
-	p->base.begin = png_begin;
-	p->base.row = png_row;
-	p->base.end = png_end;
-	p->base.write = write;
-	p->base.ctx = ctx;
-	p->base.error = NULL;
+	sink_init(&p->base, png_begin, png_row, png_end, write, ctx);
 	p->width = p->height = p->rows = 0;
 	p->rgb = NULL;
 }

@@ -135,12 +135,7 @@ static int preview_end(sink *self)
 
 void preview_sink_init(preview_sink *p, enum preview_mode mode, write_fn write, void *ctx)
 {
-	p->base.begin = preview_begin;
-	p->base.row = preview_row;
-	p->base.end = preview_end;
-	p->base.write = write;
-	p->base.ctx = ctx;
-	p->base.error = NULL;
+	sink_init(&p->base, preview_begin, preview_row, preview_end, write, ctx);
 	p->mode = mode;
 	p->width = 0;
 	p->have_upper = 0;

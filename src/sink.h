@@ -28,4 +28,17 @@ struct sink {
 	const char *error;
 };
 
+/* Fills in a sink's common part: its three steps and where its bytes go. */
+static inline void sink_init(sink *s, int (*begin)(sink *, int, int),
+			     int (*row)(sink *, const vec3 *, const int *), int (*end)(sink *),
+			     write_fn write, void *ctx)
+{
+	s->begin = begin;
+	s->row = row;
+	s->end = end;
+	s->write = write;
+	s->ctx = ctx;
+	s->error = NULL;
+}
+
 #endif
