@@ -140,6 +140,43 @@ lint:
 	status=$$?; grep -v 'warnings* generated\.$$' build/clang-tidy.err >&2; exit $$status
 	@echo "lint: clean"
 
+# The microcontroller build: the fixed-point renderer, freestanding (no C library: its
+# own semihosting layer in src/mcu/), for a Cortex-M0 (qemu `microbit`, 16 KiB RAM) and
+# a Cortex-M3 (qemu `mps2-an385`, given the same 16 KiB). `make test-mcu` runs it under
+# qemu and compares its output with build/rt-fixed; docs/mcu.md has the budgets.
+MCU_CC ?= arm-none-eabi-gcc
+MCU_HOST_ONLY = src/main.c src/output.c src/term.c src/png.c src/stdio_io.c src/bvh.c
+MCU_SRC = $(filter-out $(MCU_HOST_ONLY),$(SRC)) $(wildcard src/mcu/*.c)
+# Capacities for 16 KiB of RAM: the scene, row buffers and stack must all fit.
+MCU_CAPACITIES = -DRT_MAX_OBJECTS=24 -DRT_MAX_LIGHTS=4 -DRT_MAX_MATERIALS=8 \
+	-DRT_MAX_VERTICES=32 -DRT_MAX_POLY_VERTS=16 -DRT_MAX_PLANES=40 -DRT_MAX_HEDRON_PLANES=12 \
+	-DRT_MAX_WIDTH=160 -DRT_MAX_HEIGHT=160 -DRT_MAX_SCENE_WIDTH=8192 -DRT_MAX_SCENE_HEIGHT=8192 -DRT_MAX_MEDIA=4 -DRT_CORNER_SAMPLING=0
+MCU_DEFINES = -DRT_REAL_FIXED -DRT_USE_BVH=0 $(MCU_CAPACITIES)
+# -fsigned-char: plain char as on the x86-64 host, so both builds read bytes alike.
+MCU_CFLAGS = $(WARN) -Os -mthumb -mfloat-abi=soft -ffreestanding -fsigned-char \
+	-ffunction-sections -fdata-sections -fstack-usage -fcallgraph-info=su -Isrc -Isrc/mcu
+MCU_LDFLAGS = -nostdlib -nostartfiles -Wl,--gc-sections -Lsrc/mcu
+MCU_CPU_m0 = cortex-m0
+MCU_CPU_m3 = cortex-m3
+MCU_BOARD_m0 = microbit
+MCU_BOARD_m3 = mps2-an385
+MCU_OBJ_m0 = $(MCU_SRC:src/%.c=build/mcu/m0/%.o)
+MCU_OBJ_m3 = $(MCU_SRC:src/%.c=build/mcu/m3/%.o)
+
+build/mcu/m0/%.o: src/%.c
+	@mkdir -p $(@D)
+	$(MCU_CC) $(MCU_CFLAGS) -mcpu=$(MCU_CPU_m0) $(MCU_DEFINES) -MMD -MP -c -o $@ $<
+build/mcu/m3/%.o: src/%.c
+	@mkdir -p $(@D)
+	$(MCU_CC) $(MCU_CFLAGS) -mcpu=$(MCU_CPU_m3) $(MCU_DEFINES) -MMD -MP -c -o $@ $<
+.SECONDEXPANSION:
+build/mcu/rt-%.elf: $$(MCU_OBJ_$$*) src/mcu/sections.ld src/mcu/$$(MCU_BOARD_$$*).ld
+	$(MCU_CC) -mcpu=$(MCU_CPU_$*) -mthumb $(MCU_LDFLAGS) -T $(MCU_BOARD_$*).ld \
+		-Wl,-Map=build/mcu/rt-$*.map -o $@ $(MCU_OBJ_$*) -lgcc
+
+.SECONDARY: $(MCU_OBJ_m0) $(MCU_OBJ_m3)
+mcu: build/mcu/rt-m0.elf build/mcu/rt-m3.elf
+
 install: rt
 	mkdir -p $(DESTDIR)$(BINDIR) $(DESTDIR)$(MANDIR)
 	cp rt $(DESTDIR)$(BINDIR)/rt
@@ -153,6 +190,6 @@ uninstall:
 clean:
 	rm -rf build rt
 
-.PHONY: all test install uninstall clean fuzz fuzz-merge variants algorithms check-clang lint
+.PHONY: all mcu test install uninstall clean fuzz fuzz-merge variants algorithms check-clang lint
 
--include $(OBJ:.o=.d) $(TEST_OBJ:.o=.d)
+-include $(OBJ:.o=.d) $(TEST_OBJ:.o=.d) $(MCU_OBJ_m0:.o=.d) $(MCU_OBJ_m3:.o=.d)

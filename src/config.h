@@ -33,6 +33,14 @@
 #ifndef RT_MAX_HEIGHT
 #define RT_MAX_HEIGHT 8192 /* image height in pixels */
 #endif
+/* The largest `resolution` a scene may ask for. The same as the image's capacity on a
+ * host; the MCU build reads 320x240 scenes and renders them at the size -s gives. */
+#ifndef RT_MAX_SCENE_WIDTH
+#define RT_MAX_SCENE_WIDTH RT_MAX_WIDTH
+#endif
+#ifndef RT_MAX_SCENE_HEIGHT
+#define RT_MAX_SCENE_HEIGHT RT_MAX_HEIGHT
+#endif
 #ifndef RT_MAX_DEPTH
 #define RT_MAX_DEPTH 8 /* ray tree levels, eye ray = level 1; bounds the recursion */
 #endif
@@ -44,6 +52,10 @@
 #endif
 #ifndef RT_TOKEN_MAX
 #define RT_TOKEN_MAX 64 /* longest token in a scene file, in bytes */
+#endif
+
+#ifndef RT_CORNER_SAMPLING
+#define RT_CORNER_SAMPLING 1 /* --spd's corner rays (a second row buffer); 0 leaves them out */
 #endif
 
 #ifndef RT_USE_BVH

@@ -4,13 +4,7 @@
 
 #include <stdio.h>
 
-static void stderr_sink(void *ctx, const char *message)
-{
-	(void)ctx;
-	fputs(message, stderr);
-}
-
-static diag_sink_fn current_sink = stderr_sink;
+static diag_sink_fn current_sink = diag_standard_error;
 static void *current_ctx;
 static int muted;
 
@@ -23,7 +17,7 @@ int diag_mute(int on)
 
 void diag_set_sink(diag_sink_fn sink, void *ctx)
 {
-	current_sink = sink ? sink : stderr_sink;
+	current_sink = sink ? sink : diag_standard_error;
 	current_ctx = ctx;
 }
 

@@ -6,9 +6,13 @@
 
 #include <stdarg.h>
 
-/* Where messages go; stderr unless a test captures them. */
+/* Where messages go; standard error unless a test captures them. */
 typedef void (*diag_sink_fn)(void *ctx, const char *message);
-void diag_set_sink(diag_sink_fn sink, void *ctx);
+void diag_set_sink(diag_sink_fn sink, void *ctx); /* NULL: back to standard error */
+
+/* The default sink: writes the message to standard error. Defined by the platform's I/O
+ * layer (stdio on a host, semihosting on a microcontroller). */
+void diag_standard_error(void *ctx, const char *message);
 
 /* Silences all messages while on (for a trial pass); returns the previous setting. */
 int diag_mute(int on);

@@ -401,12 +401,13 @@ static int parse_view(parser *p)
 				return 0;
 			break;
 		default:
-			if (!read_count(&p->lx, "resolution width", 1, RT_MAX_WIDTH, "RT_MAX_WIDTH",
+			if (!read_count(&p->lx, "resolution width", 1, RT_MAX_SCENE_WIDTH,
+					"RT_MAX_SCENE_WIDTH",
 					&size))
 				return 0;
 			v->width = (int)size;
-			if (!read_count(&p->lx, "resolution height", 1, RT_MAX_HEIGHT,
-					"RT_MAX_HEIGHT", &size))
+			if (!read_count(&p->lx, "resolution height", 1, RT_MAX_SCENE_HEIGHT,
+					"RT_MAX_SCENE_HEIGHT", &size))
 				return 0;
 			v->height = (int)size;
 		}
@@ -900,36 +901,22 @@ int parse_scene(scene *s, const char *file, read_fn read, void *ctx)
 	return parse_pass(s, file, read, ctx, 0);
 }
 
-static int read_stdio(void *ctx)
+/* One whole pass over the source, from its start, at length scale 2^shift. */
+static int source_pass(scene *s, const char *name, const scene_source *source, int shift)
 {
-	int c = getc((FILE *)ctx);
-	return c == EOF ? -1 : c;
-}
-
-/* Parses the file once at length scale 2^shift; messages go where diag sends them. */
-static int parse_file_pass(scene *s, const char *path, int shift)
-{
-	FILE *f = fopen(path, "rb");
 	int ok;
-	if (!f) {
-		diag_error(path, 0, "cannot open: %s", strerror(errno));
+	if (!source->open(source->ctx))
 		return 0;
-	}
-	ok = parse_pass(s, path, read_stdio, f, shift);
-	if (ok && ferror(f)) {
-		diag_error(path, 0, "read error");
+	ok = parse_pass(s, name, source->read, source->ctx, shift);
+	/* The source reports its own read error; it counts only if parsing went well. */
+	if (!source->close(source->ctx, ok))
 		ok = 0;
-	}
-	fclose(f);
 	return ok;
 }
 
-/* One pass over a source that can be read again from its start, at scale 2^shift. */
-typedef int (*pass_fn)(scene *s, const char *name, const void *source, int shift);
-
 /* Loads a scene from a re-readable source: once in floating point; in fixed point first
  * to measure it, then at the scale that fits it, then checks it can be held. */
-static int load_scene(scene *s, const char *path, pass_fn pass, const void *source)
+int parse_scene_source(scene *s, const char *path, const scene_source *source)
 {
 	/* Floating point reads the file once. Fixed point reads it first to measure it (at
 	 * scale 1, which keeps small scenes' detail, or if a length does not fit there at
@@ -942,20 +929,20 @@ static int load_scene(scene *s, const char *path, pass_fn pass, const void *sour
 	 * static analysis reports about a variable ("always false"). */
 	if (REAL_FIRST_PASS_SHIFT != 0) {
 		int shift = 0, ok, was_muted = diag_mute(1);
-		ok = pass(s, path, source, shift);
+		ok = source_pass(s, path, source, shift);
 		if (!ok) {
 			shift = REAL_FIRST_PASS_SHIFT;
-			ok = pass(s, path, source, shift);
+			ok = source_pass(s, path, source, shift);
 		}
 		diag_mute(was_muted);
 		if (!ok)
-			return pass(s, path, source, shift); /* again, to report the error */
+			return source_pass(s, path, source, shift); /* again, to report the error */
 		/* Every length read counts, also those of objects skipped at this scale. */
 		final_shift = real_length_shift(s->longest_length, shift);
 	} else {
 		final_shift = 0;
 	}
-	if (!pass(s, path, source, final_shift))
+	if (!source_pass(s, path, source, final_shift))
 		return 0;
 	s->length_shift = final_shift;
 	scene_measure(s, &extent, &feature);
@@ -970,17 +957,6 @@ static int load_scene(scene *s, const char *path, pass_fn pass, const void *sour
 	return 1;
 }
 
-static int file_pass(scene *s, const char *path, const void *source, int shift)
-{
-	(void)source;
-	return parse_file_pass(s, path, shift);
-}
-
-int parse_scene_file(scene *s, const char *path)
-{
-	return load_scene(s, path, file_pass, NULL);
-}
-
 /* A byte buffer read from its start on every pass. */
 typedef struct {
 	const unsigned char *data;
@@ -993,18 +969,29 @@ static int read_buffer(void *ctx)
 	return b->at < b->size ? b->data[b->at++] : -1;
 }
 
-static int buffer_pass(scene *s, const char *name, const void *source, int shift)
+static int buffer_open(void *ctx)
 {
-	buffer_reader b = *(const buffer_reader *)source;
-	b.at = 0;
-	return parse_pass(s, name, read_buffer, &b, shift);
+	((buffer_reader *)ctx)->at = 0;
+	return 1;
+}
+
+static int buffer_close(void *ctx, int ok)
+{
+	(void)ctx;
+	(void)ok;
+	return 1;
 }
 
 int parse_scene_buffer(scene *s, const char *name, const void *data, size_t size)
 {
 	buffer_reader b;
+	scene_source source;
 	b.data = data;
 	b.size = size;
 	b.at = 0;
-	return load_scene(s, name, buffer_pass, &b);
+	source.open = buffer_open;
+	source.read = read_buffer;
+	source.close = buffer_close;
+	source.ctx = &b;
+	return parse_scene_source(s, name, &source);
 }

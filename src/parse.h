@@ -14,8 +14,23 @@ typedef int (*read_fn)(void *ctx);
  * through diag as `rt: FILE:LINE: ...`, with s->file as FILE. Returns 1 on success. */
 int parse_scene(scene *s, const char *file, read_fn read, void *ctx);
 
-/* Opens `path` and parses it; an unreadable file is an error too. Fixed point reads it
- * twice (to find the scene's scale) and refuses a scene it cannot hold. */
+/* A scene that can be read from its start more than once (fixed point reads it twice:
+ * once to measure it, once at the scale that fits). open starts a pass and close ends
+ * it; each reports its own failure through diag (naming the file) and returns 0. close
+ * is told whether parsing went well and checks for a read error. */
+typedef struct {
+	int (*open)(void *ctx);
+	read_fn read;
+	int (*close)(void *ctx, int ok);
+	void *ctx;
+} scene_source;
+
+/* Parses the scene from `source`: in fixed point it is read first to measure it, then
+ * at the scale that fits it, and refused when the number type cannot hold it. */
+int parse_scene_source(scene *s, const char *name, const scene_source *source);
+
+/* The same for a scene file; an unreadable file is an error too. Defined by the
+ * platform's I/O layer (stdio on a host, semihosting on a microcontroller). */
 int parse_scene_file(scene *s, const char *path);
 
 /* The same for a scene held in memory. */

@@ -12,8 +12,27 @@
 const char preview_ramp[] = " .:-=+*#%@";
 #define RAMP_LENGTH (int)(sizeof preview_ramp - 1)
 
-/* One text line: at most ~40 bytes of escapes and glyph per cell, plus the reset. */
-static char line[44 * RT_MAX_WIDTH + 16];
+/* Text goes out in chunks, not whole lines, so memory does not grow with the width (a
+ * 24-bit colour line is ~40 bytes a cell). A chunk is sent when the next cell might not
+ * fit: a cell writes at most two 24-bit escapes (19 bytes each) and a 3-byte glyph. */
+#define CHUNK_BYTES 256 /* text buffered before a write */
+#define CELL_BYTES 48   /* most bytes one cell can add, with the line's end */
+
+typedef struct {
+	preview_sink *p;
+	char text[CHUNK_BYTES];
+	int n;  /* bytes buffered */
+	int ok; /* every write so far succeeded */
+} chunk;
+
+/* Sends the buffered text when it might not hold another cell (or always, at the end). */
+static void send(chunk *c, int always)
+{
+	if (c->n > 0 && (always || c->n > CHUNK_BYTES - CELL_BYTES)) {
+		c->ok = c->ok && c->p->base.write(c->p->base.ctx, c->text, (size_t)c->n);
+		c->n = 0;
+	}
+}
 
 void preview_size(int columns, int scene_width, int scene_height, int *width, int *height)
 {
@@ -73,29 +92,36 @@ static int changed(enum preview_mode mode, const unsigned char *a, const unsigne
 /* Writes the text line for an upper and a lower pixel row. */
 static int emit_line(preview_sink *p, const unsigned char *upper, const unsigned char *lower)
 {
-	int x, n = 0;
+	static chunk c;
+	int x;
 	const unsigned char *fg = NULL, *bg = NULL; /* colours in effect on this line */
+	c.p = p;
+	c.n = 0;
+	c.ok = 1;
 	for (x = 0; x < p->width; x++) {
 		const unsigned char *u = upper + 3 * x, *l = lower + 3 * x;
+		send(&c, 0);
 		if (p->mode == PREVIEW_ASCII) {
 			int lightness = (luma(u) + luma(l)) / 2;
-			line[n++] = preview_ramp[lightness * RAMP_LENGTH / 256];
+			c.text[c.n++] = preview_ramp[lightness * RAMP_LENGTH / 256];
 			continue;
 		}
 		if (!fg || changed(p->mode, fg, u))
-			n += set_color(line + n, 38, p->mode, u);
+			c.n += set_color(c.text + c.n, 38, p->mode, u);
 		if (!bg || changed(p->mode, bg, l))
-			n += set_color(line + n, 48, p->mode, l);
+			c.n += set_color(c.text + c.n, 48, p->mode, l);
 		fg = u;
 		bg = l;
-		line[n++] = (char)0xE2; /* U+2580 in UTF-8 */
-		line[n++] = (char)0x96;
-		line[n++] = (char)0x80;
+		c.text[c.n++] = (char)0xE2; /* U+2580 in UTF-8 */
+		c.text[c.n++] = (char)0x96;
+		c.text[c.n++] = (char)0x80;
 	}
+	send(&c, 0);
 	if (p->mode != PREVIEW_ASCII)
-		n += sprintf(line + n, "\033[0m");
-	line[n++] = '\n';
-	return p->base.write(p->base.ctx, line, (size_t)n);
+		c.n += sprintf(c.text + c.n, "\033[0m");
+	c.text[c.n++] = '\n';
+	send(&c, 1);
+	return c.ok;
 }
 
 static int preview_begin(sink *self, int width, int height)

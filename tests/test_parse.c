@@ -696,9 +696,9 @@ static void test_view_errors(void)
 	EXPECT_OK(VIEW_WITH("0 0 -10", "0 0 0", "0 1 0", "0.01", "32 24"));
 
 	EXPECT_ERROR(VIEW_WITH("0 0 -10", "0 0 0", "0 1 0", "45", "0 24"), 7,
-		     "resolution width must be 1 to " STR(RT_MAX_WIDTH) ", got 0");
+		     "resolution width must be 1 to " STR(RT_MAX_SCENE_WIDTH) ", got 0");
 	EXPECT_ERROR(VIEW_WITH("0 0 -10", "0 0 0", "0 1 0", "45", "32 0"), 7,
-		     "resolution height must be 1 to " STR(RT_MAX_HEIGHT) ", got 0");
+		     "resolution height must be 1 to " STR(RT_MAX_SCENE_HEIGHT) ", got 0");
 	EXPECT_ERROR(VIEW_WITH("0 0 -10", "0 0 0", "0 1 0", "45", "32.5 24"), 7,
 		     "expected resolution width (a whole number), got '32.5'");
 	EXPECT_ERROR(VIEW_WITH("0 0 -10", "0 0 0", "0 1 0", "45", "100000 24"), 7,

@@ -1,0 +1,224 @@
+/* libc.c - the few C library functions rt calls, for a microcontroller with no C library
+ * linked: memory and string helpers, strtol, and an integer-only printf core. Nothing
+ * here allocates, and nothing buffers behind the caller's back.
+ * See LICENSE for copyright and licence. */
+#include <errno.h>
+#include <limits.h>
+#include <stdarg.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* newlib's errno.h makes errno a call to __errno(). */
+int *__errno(void);
+int *__errno(void)
+{
+	static int error_number;
+	return &error_number;
+}
+
+void *memset(void *dst, int c, size_t n)
+{
+	unsigned char *d = dst;
+	while (n--)
+		*d++ = (unsigned char)c;
+	return dst;
+}
+
+void *memcpy(void *restrict dst, const void *restrict src, size_t n)
+{
+	unsigned char *d = dst;
+	const unsigned char *s = src;
+	while (n--)
+		*d++ = *s++;
+	return dst;
+}
+
+void *memmove(void *dst, const void *src, size_t n)
+{
+	unsigned char *d = dst;
+	const unsigned char *s = src;
+	if (d < s) {
+		while (n--)
+			*d++ = *s++;
+	} else {
+		while (n--)
+			d[n] = s[n];
+	}
+	return dst;
+}
+
+size_t strlen(const char *s)
+{
+	size_t n = 0;
+	while (s[n])
+		n++;
+	return n;
+}
+
+int strcmp(const char *a, const char *b)
+{
+	while (*a && *a == *b) {
+		a++;
+		b++;
+	}
+	return (unsigned char)*a - (unsigned char)*b;
+}
+
+/* Decimal only (base 10 is all rt asks for); ERANGE and LONG_MIN/MAX on overflow. */
+long strtol(const char *restrict text, char **restrict end, int base)
+{
+	const char *p = text;
+	unsigned long value = 0, limit;
+	int negative = 0, digits = 0, overflow = 0;
+	(void)base;
+	while (*p == ' ' || (*p >= '\t' && *p <= '\r'))
+		p++;
+	if (*p == '-' || *p == '+')
+		negative = *p++ == '-';
+	limit = negative ? (unsigned long)LONG_MAX + 1u : (unsigned long)LONG_MAX;
+	for (; *p >= '0' && *p <= '9'; p++, digits++) {
+		unsigned d = (unsigned)(*p - '0');
+		if (value > (limit - d) / 10u)
+			overflow = 1;
+		else
+			value = value * 10u + d;
+	}
+	/* strtol's contract hands back a non-const pointer into a const string. */
+	if (end)
+		*end = (char *)(uintptr_t)(digits ? p : text);
+	if (overflow) {
+		errno = ERANGE;
+		return negative ? LONG_MIN : LONG_MAX;
+	}
+	if (negative)
+		return value ? -(long)(value - 1u) - 1 : 0;
+	return (long)value;
+}
+
+/* ---- formatted output: %d %u %x %X %s %c %% with flags '-' '0', width, .precision
+ * (for strings) and the l length; enough for every message and header rt writes. */
+
+typedef struct {
+	char *buf;
+	size_t size, used; /* used counts every byte, also those that did not fit */
+} out_buf;
+
+static void put(out_buf *o, char c)
+{
+	if (o->used + 1 < o->size)
+		o->buf[o->used] = c;
+	o->used++;
+}
+
+static void put_padded(out_buf *o, const char *text, size_t n, int width, int left, char pad)
+{
+	int fill = width > (int)n ? width - (int)n : 0;
+	if (!left)
+		while (fill-- > 0)
+			put(o, pad);
+	while (n--)
+		put(o, *text++);
+	if (left)
+		while (fill-- > 0)
+			put(o, ' ');
+}
+
+int vsnprintf(char *restrict buf, size_t size, const char *restrict fmt, va_list ap)
+{
+	out_buf o;
+	o.buf = buf;
+	o.size = size;
+	o.used = 0;
+	for (; *fmt; fmt++) {
+		char digits[12], pad = ' ';
+		int left = 0, width = 0, precision = -1, is_long = 0, n = 0;
+		unsigned long u;
+		unsigned base = 10;
+		const char *s;
+		if (*fmt != '%') {
+			put(&o, *fmt);
+			continue;
+		}
+		for (fmt++; *fmt == '-' || *fmt == '0'; fmt++) {
+			if (*fmt == '-')
+				left = 1;
+			else
+				pad = '0';
+		}
+		for (; *fmt >= '0' && *fmt <= '9'; fmt++)
+			width = width * 10 + (*fmt - '0');
+		if (*fmt == '.')
+			for (precision = 0, fmt++; *fmt >= '0' && *fmt <= '9'; fmt++)
+				precision = precision * 10 + (*fmt - '0');
+		if (*fmt == 'l') {
+			is_long = 1;
+			fmt++;
+		}
+		switch (*fmt) {
+		case 's':
+			s = va_arg(ap, const char *);
+			for (n = 0; s[n] && (precision < 0 || n < precision); n++)
+				;
+			put_padded(&o, s, (size_t)n, width, left, ' ');
+			continue;
+		case 'c':
+			digits[0] = (char)va_arg(ap, int);
+			put_padded(&o, digits, 1, width, left, ' ');
+			continue;
+		case 'd': {
+			long v = is_long ? va_arg(ap, long) : va_arg(ap, int);
+			if (v < 0) {
+				put(&o, '-');
+				width--;
+			}
+			u = v < 0 ? 0u - (unsigned long)v : (unsigned long)v;
+			break;
+		}
+		case 'x':
+		case 'X':
+			base = 16;
+			/* fall through */
+		case 'u':
+			u = is_long ? va_arg(ap, unsigned long) : va_arg(ap, unsigned);
+			break;
+		default: /* %% and anything unknown print as themselves */
+			put(&o, *fmt ? *fmt : '%');
+			if (!*fmt)
+				fmt--;
+			continue;
+		}
+		/* Digits backwards into the end of the buffer. */
+		n = (int)sizeof digits;
+		do {
+			unsigned d = (unsigned)(u % base);
+			digits[--n] = (char)(d < 10 ? '0' + d : (*fmt == 'x' ? 'a' : 'A') + d - 10);
+			u /= base;
+		} while (u);
+		put_padded(&o, digits + n, sizeof digits - (size_t)n, width, left, pad);
+	}
+	if (size > 0)
+		buf[o.used < size ? o.used : size - 1] = '\0';
+	return (int)o.used;
+}
+
+int snprintf(char *restrict buf, size_t size, const char *restrict fmt, ...)
+{
+	va_list ap;
+	int n;
+	va_start(ap, fmt);
+	n = vsnprintf(buf, size, fmt, ap);
+	va_end(ap);
+	return n;
+}
+
+int sprintf(char *restrict buf, const char *restrict fmt, ...)
+{
+	va_list ap;
+	int n;
+	va_start(ap, fmt);
+	n = vsnprintf(buf, (size_t)INT_MAX, fmt, ap);
+	va_end(ap);
+	return n;
+}

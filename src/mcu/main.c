@@ -1,0 +1,152 @@
+/* main.c - rt on a microcontroller: the same renderer and scene files as on a host,
+ * with a smaller command line. The image (PPM, ASCII preview or object IDs) goes to
+ * standard output through semihosting, byte for byte what the host's fixed-point build
+ * writes. Start reading here for the MCU build; the rest is src/.
+ * See LICENSE for copyright and licence. */
+#include <stdio.h>
+#include <string.h>
+
+#include "camera.h"
+#include "diag.h"
+#include "image.h"
+#include "mcu.h"
+#include "parse.h"
+#include "preview.h"
+#include "render.h"
+#include "trace.h"
+
+#define PREVIEW_COLUMNS 80 /* --ascii width when --cols is not given: no terminal to ask */
+
+static const char usage_text[] =
+	"Usage: rt [-s WxH] [-d N] [--ascii] [--cols N] [--ids] [--stack] SCENE\n";
+
+enum format { FORMAT_PPM, FORMAT_ASCII, FORMAT_IDS };
+
+typedef struct {
+	const char *scene_path;
+	enum format format;
+	int width, height, depth, columns;
+	int report_stack; /* --stack: print the stack's high-water mark on standard error */
+} options;
+
+/* Large: static, as the stack is small. */
+static scene the_scene;
+static tracer the_tracer;
+static union {
+	ppm_sink ppm;
+	ids_sink ids;
+	preview_sink preview;
+} sinks;
+
+static int usage_error(const char *what, const char *arg)
+{
+	diag_error(NULL, 0, "%s '%s'", what, arg);
+	mcu_stderr(usage_text);
+	return 2;
+}
+
+/* A decimal number in [1, max] ending at `stop`; *rest is after it. */
+static int read_int(const char *text, char stop, int max, int *out, const char **rest)
+{
+	long v = 0;
+	if (*text < '0' || *text > '9')
+		return 0;
+	for (; *text >= '0' && *text <= '9'; text++)
+		if ((v = v * 10 + (*text - '0')) > max)
+			return 0;
+	if (*text != stop || v < 1)
+		return 0;
+	*out = (int)v;
+	if (rest)
+		*rest = text + 1;
+	return 1;
+}
+
+/* Returns -1 to go on, else the exit status. */
+static int parse_options(int argc, char **argv, options *o)
+{
+	int i;
+	memset(o, 0, sizeof *o);
+	o->columns = PREVIEW_COLUMNS;
+	for (i = 1; i < argc; i++) {
+		const char *a = argv[i], *value, *rest;
+		if (strcmp(a, "--ascii") == 0) {
+			o->format = FORMAT_ASCII;
+		} else if (strcmp(a, "--ids") == 0) {
+			o->format = FORMAT_IDS;
+		} else if (strcmp(a, "--stack") == 0) {
+			o->report_stack = 1;
+		} else if (strcmp(a, "-s") == 0 || strcmp(a, "-d") == 0 || strcmp(a, "--cols") == 0) {
+			if (i + 1 >= argc)
+				return usage_error("option needs a value:", a);
+			value = argv[++i];
+			if (strcmp(a, "-s") == 0 ? !read_int(value, 'x', RT_MAX_WIDTH, &o->width, &rest) ||
+							   !read_int(rest, '\0', RT_MAX_HEIGHT, &o->height, NULL)
+			    : strcmp(a, "-d") == 0 ? !read_int(value, '\0', RT_MAX_DEPTH, &o->depth, NULL)
+						   : !read_int(value, '\0', RT_MAX_WIDTH, &o->columns, NULL))
+				return usage_error("bad value for option", a);
+		} else if (a[0] == '-' || o->scene_path) {
+			return usage_error("unexpected argument", a);
+		} else {
+			o->scene_path = a;
+		}
+	}
+	if (!o->scene_path)
+		return usage_error("no scene file given", "");
+	return -1;
+}
+
+/* Prints the stack's high-water mark: what the measured run really used. */
+static void print_stack_used(void)
+{
+	char line[48];
+	snprintf(line, sizeof line, "stack_bytes: %lu\n", (unsigned long)mcu_stack_used());
+	mcu_stderr(line);
+}
+
+int main(int argc, char **argv)
+{
+	options opt;
+	camera cam;
+	sink *target;
+	int status = parse_options(argc, argv, &opt), width, height, ok;
+	if (status >= 0)
+		return status;
+	if (!parse_scene_file(&the_scene, opt.scene_path))
+		return 1;
+	width = opt.width ? opt.width : the_scene.camera.width;
+	height = opt.height ? opt.height : the_scene.camera.height;
+	if (opt.format == FORMAT_ASCII)
+		preview_size(opt.columns, width, height, &width, &height);
+	if (width > RT_MAX_WIDTH || height > RT_MAX_HEIGHT) {
+		diag_error(opt.scene_path, 0,
+			   "%dx%d is over this build's image size limit %dx%d (give -s WxH)", width,
+			   height, RT_MAX_WIDTH, RT_MAX_HEIGHT);
+		return 1;
+	}
+	if (!camera_init(&cam, &the_scene.camera, width, height)) {
+		diag_error(opt.scene_path, 0, "degenerate view");
+		return 1;
+	}
+	tracer_init(&the_tracer, &the_scene, opt.depth ? opt.depth : the_scene.depth,
+		    the_scene.cutoff);
+	if (opt.format == FORMAT_ASCII) {
+		preview_sink_init(&sinks.preview, PREVIEW_ASCII, mcu_stdout_write, NULL);
+		target = &sinks.preview.base;
+	} else if (opt.format == FORMAT_IDS) {
+		ids_sink_init(&sinks.ids, mcu_stdout_write, NULL);
+		target = &sinks.ids.base;
+	} else {
+		ppm_sink_init(&sinks.ppm, mcu_stdout_write, NULL);
+		target = &sinks.ppm.base;
+	}
+	ok = render_image(&the_tracer, &cam, SAMPLE_CENTRE, 0, height, target, NULL, NULL);
+	ok = mcu_stdout_flush() && ok;
+	if (!ok) {
+		diag_error(NULL, 0, "%s", target->error ? target->error : "write error");
+		return 1;
+	}
+	if (opt.report_stack)
+		print_stack_used();
+	return 0;
+}
