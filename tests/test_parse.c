@@ -702,7 +702,7 @@ static void test_view_errors(void)
 	EXPECT_ERROR(VIEW_WITH("0 0 -10", "0 0 0", "0 1 0", "45", "32.5 24"), 7,
 		     "expected resolution width (a whole number), got '32.5'");
 	EXPECT_ERROR(VIEW_WITH("0 0 -10", "0 0 0", "0 1 0", "45", "100000 24"), 7,
-		     "resolution width 100000 is over the limit RT_MAX_WIDTH");
+		     "resolution width 100000 is over the limit RT_MAX_SCENE_WIDTH");
 	EXPECT_OK(VIEW_WITH("0 0 -10", "0 0 0", "0 1 0", "45", "1 1"));
 
 	/* Degenerate cameras are reported at the `v` line. */
