@@ -22,6 +22,10 @@ LIB_OBJ = $(LIB_SRC:src/%.c=build/obj/%.o)
 TEST_SRC = $(wildcard tests/*.c)
 TEST_OBJ = $(TEST_SRC:tests/%.c=build/obj/tests/%.o)
 
+# `make test` runs the MCU tests too (tests/mcu.sh) when the cross compiler is there.
+MCU_CC ?= arm-none-eabi-gcc
+MCU_TEST = $(if $(shell command -v $(MCU_CC)),mcu-ready)
+
 all: rt
 
 rt: $(OBJ)
@@ -92,7 +96,7 @@ build/rt-%: $(SRC) $(wildcard src/*.h)
 	$(CC) $(WARN) -ffp-contract=off $(VARIANT_FLAGS_$*) $(CPPFLAGS) $(CFLAGS) -o $@ $(SRC) $(LDLIBS) $(RT_LDLIBS)
 
 test: rt build/unit-tests build/san/rt build/san/unit-tests build/san/replay build/san/replay-fixed \
-      build/unit-tests-float build/unit-tests-ref build/rt-fixed build/rt-ref
+      build/unit-tests-float build/unit-tests-ref build/rt-fixed build/rt-ref $(MCU_TEST)
 	@sh tests/run.sh
 
 # Fuzzing with libFuzzer (clang): `make fuzz FUZZ_SECONDS=600` (FUZZ_TYPE=fixed fuzzes
@@ -144,7 +148,6 @@ lint:
 # own semihosting layer in src/mcu/), for a Cortex-M0 (qemu `microbit`, 16 KiB RAM) and
 # a Cortex-M3 (qemu `mps2-an385`, given the same 16 KiB). `make test-mcu` runs it under
 # qemu and compares its output with build/rt-fixed; docs/mcu.md has the budgets.
-MCU_CC ?= arm-none-eabi-gcc
 MCU_HOST_ONLY = src/main.c src/output.c src/term.c src/png.c src/stdio_io.c src/bvh.c
 MCU_SRC = $(filter-out $(MCU_HOST_ONLY),$(SRC)) $(wildcard src/mcu/*.c)
 # Capacities for 16 KiB of RAM: the scene, row buffers and stack must all fit.
@@ -177,6 +180,18 @@ build/mcu/rt-%.elf: $$(MCU_OBJ_$$*) src/mcu/sections.ld src/mcu/$$(MCU_BOARD_$$*
 .SECONDARY: $(MCU_OBJ_m0) $(MCU_OBJ_m3)
 mcu: build/mcu/rt-m0.elf build/mcu/rt-m3.elf
 
+# The instruction-counting qemu plugin (tools/mcu-cost), built for the host.
+build/mcu/insncount.so: tools/mcu/insncount.c
+	@mkdir -p $(@D)
+	$(CC) -O2 -Wall -Wextra -shared -fPIC -o $@ tools/mcu/insncount.c
+
+# qemu-system-arm is installed from Debian's packages when missing.
+mcu-ready: mcu build/rt-fixed
+	@command -v qemu-system-arm >/dev/null || { apt-get update && apt-get install -y qemu-system-arm; }
+test-mcu: mcu-ready
+	@sh tests/mcu.sh
+
+
 install: rt
 	mkdir -p $(DESTDIR)$(BINDIR) $(DESTDIR)$(MANDIR)
 	cp rt $(DESTDIR)$(BINDIR)/rt
@@ -190,6 +205,6 @@ uninstall:
 clean:
 	rm -rf build rt
 
-.PHONY: all mcu test install uninstall clean fuzz fuzz-merge variants algorithms check-clang lint
+.PHONY: all mcu mcu-ready test-mcu test install uninstall clean fuzz fuzz-merge variants algorithms check-clang lint
 
 -include $(OBJ:.o=.d) $(TEST_OBJ:.o=.d) $(MCU_OBJ_m0:.o=.d) $(MCU_OBJ_m3:.o=.d)

@@ -8,20 +8,50 @@
  * only the fixed build's `real` uses it. */
 #include <stdio.h>
 
+#if FIXED_NARROW
+int64_t fixed_wide_mul(int32_t a, int32_t b)
+{
+	return fixed_wide_mul_narrow(a, b);
+}
+
+uint32_t fixed_udiv(uint64_t n, uint32_t d)
+{
+	return fixed_udiv_narrow(n, d);
+}
+#endif
+
 uint64_t fixed_isqrt64(uint64_t x)
 {
-	uint64_t r = 0, bit = (uint64_t)1 << 62;
-	while (bit > x)
-		bit >>= 2;
-	/* Digit by digit: r becomes floor(sqrt(x)) and x the remainder x - r^2. */
-	while (bit) {
-		if (x >= r + bit) {
-			x -= r + bit;
-			r = (r >> 1) + bit;
-		} else {
-			r >>= 1;
+	uint64_t r = 0, bit;
+	if (x == 0)
+		return 0;
+	/* The highest power of 4 not above x, from its bit length (no search loop). */
+	bit = (uint64_t)1 << ((fixed_bit_length(x) - 1) & ~1);
+	/* Digit by digit: r becomes floor(sqrt(x)) and x the remainder x - r^2. While r and
+	 * bit fit 32 bits (x below 2^32), 32-bit arithmetic does: cheaper on small cores. */
+	if (!(x >> 32)) {
+		uint32_t x32 = (uint32_t)x, r32 = 0, bit32 = (uint32_t)bit;
+		while (bit32) {
+			if (x32 >= r32 + bit32) {
+				x32 -= r32 + bit32;
+				r32 = (r32 >> 1) + bit32;
+			} else {
+				r32 >>= 1;
+			}
+			bit32 >>= 2;
 		}
-		bit >>= 2;
+		x = x32;
+		r = r32;
+	} else {
+		while (bit) {
+			if (x >= r + bit) {
+				x -= r + bit;
+				r = (r >> 1) + bit;
+			} else {
+				r >>= 1;
+			}
+			bit >>= 2;
+		}
 	}
 	/* Round: sqrt(n) >= r + 1/2 exactly when n - r^2 > r (numerics.md Q03). */
 	return x > r ? r + 1 : r;

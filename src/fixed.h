@@ -22,27 +22,159 @@ static inline int32_t fixed_saturate(int64_t v)
 static inline int64_t fixed_round_div(int64_t n, int64_t d)
 {
 	int64_t half = (d < 0 ? -d : d) / 2;
-	return ((n < 0) == (d < 0) ? n + half : n - half) / d;
+	/* Away from zero: the half goes the way n points (C's division truncates). */
+	return (n < 0 ? n - half : n + half) / d;
+}
+
+/* A Cortex-M0 (ARMv6-M) multiplies only 32 x 32 -> 32 bits and cannot divide: there a
+ * 64-bit product is a call to a general 64 x 64 routine (~40 instructions) and a 64-bit
+ * quotient one to a general 64 / 64 routine (~500). The narrow forms below build the
+ * same bits from 16 x 16 products and shift-and-subtract; tests/test_fixed.c checks both
+ * forms agree on every build. Elsewhere the compiler's 64-bit arithmetic is used. */
+#if defined(__ARM_ARCH_6M__)
+#define FIXED_NARROW 1
+#else
+#define FIXED_NARROW 0
+#endif
+
+/* The exact 64-bit product a b from four 16 x 16 products: a = ah 2^16 + al with ah
+ * signed and al in [0, 2^16), so every partial product fits 32 bits. The sum wraps
+ * modulo 2^64 (unsigned), which is exact because the true product fits 63 bits. */
+static inline int64_t fixed_wide_mul_narrow(int32_t a, int32_t b)
+{
+	int32_t ah = a >> 16, bh = b >> 16;
+	int32_t al = (int32_t)((uint32_t)a & 0xFFFFu), bl = (int32_t)((uint32_t)b & 0xFFFFu);
+	uint64_t high = (uint64_t)(int64_t)(ah * bh) << 32;
+	int64_t cross = (int64_t)(ah * bl) + (int64_t)(al * bh);
+	uint64_t low = (uint64_t)((uint32_t)al * (uint32_t)bl);
+	return (int64_t)(high + ((uint64_t)cross << 16) + low);
+}
+
+/* The exact 64-bit product of two unsigned 32-bit numbers. */
+static inline uint64_t fixed_umul64(uint32_t a, uint32_t b)
+{
+#if defined(__ARM_ARCH_6M__)
+	uint32_t ah = a >> 16, al = a & 0xFFFFu, bh = b >> 16, bl = b & 0xFFFFu;
+	uint64_t cross = (uint64_t)(ah * bl) + (al * bh);
+	return ((uint64_t)(ah * bh) << 32) + (cross << 16) + al * bl;
+#else
+	return (uint64_t)a * b;
+#endif
+}
+
+/* Number of significant bits of x (0 for 0), by halving: a few steps, no loop. */
+static inline int fixed_bit_length(uint64_t x)
+{
+	int n = 0;
+	uint32_t v = (uint32_t)x;
+	if (x >> 32) {
+		n = 32;
+		v = (uint32_t)(x >> 32);
+	}
+	if (v >> 16) {
+		n += 16;
+		v >>= 16;
+	}
+	if (v >> 8) {
+		n += 8;
+		v >>= 8;
+	}
+	if (v >> 4) {
+		n += 4;
+		v >>= 4;
+	}
+	if (v >> 2) {
+		n += 2;
+		v >>= 2;
+	}
+	if (v >> 1) {
+		n += 1;
+		v >>= 1;
+	}
+	return n + (int)v;
+}
+
+/* floor(n / d) for d > 0, or UINT32_MAX when the quotient does not fit 32 bits: one
+ * quotient bit per step, from a remainder that always stays below d. */
+static inline uint32_t fixed_udiv_narrow(uint64_t n, uint32_t d)
+{
+	/* The quotient has at most `bits` bits: start with the remainder n >> bits (< d) and
+	 * bring down one bit of n per step, skipping the quotient's leading zeros. */
+	int bits = fixed_bit_length(n) - fixed_bit_length(d) + 1, i;
+	uint32_t rem, low, q = 0;
+	if (bits <= 0)
+		return 0;
+	if ((uint32_t)(n >> 32) >= d)
+		return UINT32_MAX; /* the quotient needs more than 32 bits */
+	if (bits > 32)
+		bits = 32;
+	rem = (uint32_t)(n >> bits);
+	low = bits == 32 ? (uint32_t)n : (uint32_t)n << (32 - bits);
+	for (i = 0; i < bits; i++) {
+		/* rem < d, so 2 rem + 1 < 2^33: the bit shifted out is the 33rd. */
+		uint32_t carry = rem >> 31;
+		rem = (rem << 1) | (low >> 31);
+		low <<= 1;
+		q <<= 1;
+		if (carry || rem >= d) {
+			rem -= d;
+			q |= 1;
+		}
+	}
+	return q;
+}
+
+#if FIXED_NARROW
+/* Out of line here: one copy of each kernel keeps the M0's flash small. */
+int64_t fixed_wide_mul(int32_t a, int32_t b);
+uint32_t fixed_udiv(uint64_t n, uint32_t d);
+#else
+static inline int64_t fixed_wide_mul(int32_t a, int32_t b)
+{
+	return (int64_t)a * b;
+}
+
+static inline uint32_t fixed_udiv(uint64_t n, uint32_t d)
+{
+	uint64_t q = n / d;
+	return q > UINT32_MAX ? UINT32_MAX : (uint32_t)q;
+}
+#endif
+
+/* n / d rounded to nearest, halves away from zero, saturated to Q16.16's range. */
+static inline int32_t fixed_round_div_sat(int64_t n, int32_t d)
+{
+	uint64_t magnitude = n < 0 ? 0u - (uint64_t)n : (uint64_t)n;
+	uint32_t divisor = d < 0 ? 0u - (uint32_t)d : (uint32_t)d;
+	uint32_t q;
+	if (magnitude > UINT64_MAX - divisor / 2)
+		q = UINT32_MAX;
+	else
+		q = fixed_udiv(magnitude + divisor / 2, divisor);
+	if (q > (uint32_t)INT32_MAX)
+		q = (uint32_t)INT32_MAX;
+	return (n < 0) != (d < 0) ? -(int32_t)q : (int32_t)q;
 }
 
 static inline int32_t fixed_mul(int32_t a, int32_t b)
 {
-	return fixed_saturate(((int64_t)a * b + 0x8000) >> 16);
+	return fixed_saturate((fixed_wide_mul(a, b) + 0x8000) >> 16);
 }
 
 /* A dot product summed in 64 bits and rounded once. */
 static inline int32_t fixed_dot3(int32_t ax, int32_t ay, int32_t az, int32_t bx, int32_t by,
 				 int32_t bz)
 {
-	return fixed_saturate(((int64_t)ax * bx + (int64_t)ay * by + (int64_t)az * bz + 0x8000) >>
-			      16);
+	return fixed_saturate(
+		(fixed_wide_mul(ax, bx) + fixed_wide_mul(ay, by) + fixed_wide_mul(az, bz) + 0x8000) >>
+		16);
 }
 
 static inline int32_t fixed_div(int32_t a, int32_t b)
 {
 	if (b == 0)
 		return a >= 0 ? FIXED_MAX : -FIXED_MAX;
-	return fixed_saturate(fixed_round_div((int64_t)a * 65536, b));
+	return fixed_round_div_sat((int64_t)a * 65536, b);
 }
 
 static inline int32_t fixed_abs(int32_t a)
@@ -60,17 +192,24 @@ static inline int32_t fixed_div2(int64_t w, int32_t b)
 {
 	if (b == 0)
 		return w >= 0 ? FIXED_MAX : -FIXED_MAX;
-	return fixed_saturate(fixed_round_div(w, b));
+	return fixed_round_div_sat(w, b);
 }
 
-/* w (Q32.32) times a (Q16.16) as Q32.32, saturating. */
+/* w (Q32.32) times a (Q16.16) as Q32.32, saturating when the product could pass 2^63
+ * (a bit-length test: no 64-bit division). */
 static inline int64_t fixed_scale2(int64_t w, int32_t a)
 {
 	int64_t high = w / 65536;
-	if (a != 0 && (high > INT64_MAX / (a < 0 ? -(int64_t)a : a) ||
-		       high < -INT64_MAX / (a < 0 ? -(int64_t)a : a)))
+	uint64_t mh = high < 0 ? 0u - (uint64_t)high : (uint64_t)high;
+	uint32_t ma = a < 0 ? 0u - (uint32_t)a : (uint32_t)a;
+	uint64_t product;
+	if (ma == 0 || mh == 0)
+		return 0;
+	if (fixed_bit_length(mh) + fixed_bit_length(ma) > 63)
 		return (high < 0) != (a < 0) ? -INT64_MAX : INT64_MAX;
-	return high * a;
+	/* |high| |a| < 2^63 here: split |high| into 32-bit halves, each times |a| exactly. */
+	product = (fixed_umul64((uint32_t)(mh >> 32), ma) << 32) + fixed_umul64((uint32_t)mh, ma);
+	return (high < 0) != (a < 0) ? -(int64_t)product : (int64_t)product;
 }
 
 /* Rounded integer square root of a 64-bit number. */

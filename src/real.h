@@ -90,12 +90,17 @@ typedef int64_t real2; /* Q32.32: squares and products of lengths */
 #define real_isfinite(x) ((void)(x), 1)
 #define real_from_int(i) fixed_from_int(i)
 #define real_to_int(x) ((x) >> 16)
-#define real_mul2(a, b) ((real2)(a) * (real2)(b))
+#define real_mul2(a, b) fixed_wide_mul((a), (b))
 #define real2_from(a) ((real2)(a) * 65536)
 #define real2_sqrt(w) fixed_sqrt2(w)
 #define real2_div(w, b) fixed_div2((w), (b))
 #define real2_ratio(a, b) fixed_ratio2((a), (b))
 #define real2_scale(w, a) fixed_scale2((w), (a))
+/* How far b^2 - w can be off through rounding, for b a rounded dot product (half an LSB:
+ * b^2 off by |b| in Q32.32) and w a real2 scaled by a near-one factor (real2_scale
+ * truncates: off by |w| / 2^16), with room to spare: errors here are absolute. */
+#define real2_error_bound(b, w) \
+	((real2)fixed_abs(b) + ((w) < 0 ? -(w) : (w)) / 65536 + (real2)131072)
 /* Beyond any scaled scene's coordinates (4096): an infinite plane is seen out to six
  * times the scene's extent. Hit points out there are within range (4096 + 24000), and
  * the vector arithmetic from them saturates (real_add) rather than overflows. */
@@ -169,6 +174,8 @@ static inline real real_ldexp_(real x, int e)
 #define real2_div(w, b) ((w) / (b))
 #define real2_ratio(a, b) ((a) / (b))
 #define real2_scale(w, a) ((w) * (a))
+/* How far b^2 - w can be off through rounding: relative errors, bounded generously. */
+#define real2_error_bound(b, w) ((real_mul2((b), (b)) + real_fabs(w)) * REAL_OFFSET)
 #endif
 /* real2 is the type of squared lengths and products of two lengths (dot products of
  * positions, areas, quadratic coefficients): real_mul2(a, b) is a * b as a real2,

@@ -37,6 +37,11 @@ int sphere_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h
 	real b = vec_dot(f, r->dir);
 	real2 c = vec_dot2(f, f) - s->radius2;
 	real t0, t1, t;
+	/* Outside the sphere and moving away from its centre: both roots lie behind the
+	 * origin (their product c/a > 0, their sum -2b/a < 0). Most rays miss most spheres,
+	 * and this costs nothing. */
+	if (c > 0 && b > REAL_C(0.0))
+		return 0;
 #if RT_SPHERE_TEXTBOOK
 	/* The textbook form, for comparison only: b^2 - c cancels for small, distant or
 	 * grazing spheres, and -b +- sqrt cancels for huge ones (numerics.md section 1). */
@@ -54,7 +59,13 @@ int sphere_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h
 	 * (terms of size r^2, not |f|^2); b^2 - a c = a (r^2 - |v|^2), written as
 	 * D + D (a - 1) to keep fixed point's low bits. */
 	real a = vec_dot(r->dir, r->dir);
-	vec3 v = vec_madd(f, -real_div(b, a), r->dir);
+	vec3 v;
+	real2 ac = real2_scale(c, a);
+	/* A clear miss by the textbook discriminant b^2 - a c (cheap: no division, no root)
+	 * is a miss: only rays that pass near the sphere take the careful path below. */
+	if (real_mul2(b, b) - ac < -real2_error_bound(b, ac))
+		return 0;
+	v = vec_madd(f, -real_div(b, a), r->dir);
 	real2 perpendicular = s->radius2 - vec_dot2(v, v);
 	real2 discriminant = perpendicular + real2_scale(perpendicular, a - REAL_C(1.0));
 	if (!solve_quadratic(a, b, c, discriminant, &t0, &t1))

@@ -44,5 +44,10 @@ for script in tests/cli.sh tests/golden.sh tests/bad.sh; do
 	tally "$name-sanitized" "$(RT=./build/san/rt sh "$script" 2>&1)"
 done
 tally fixed "$(sh tests/fixed.sh 2>&1)"
+if command -v arm-none-eabi-gcc >/dev/null 2>&1; then
+	tally mcu "$(sh tests/mcu.sh 2>&1)"
+else
+	echo "mcu: skipped (no arm-none-eabi-gcc; the MCU build needs it)"
+fi
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

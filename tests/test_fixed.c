@@ -105,8 +105,80 @@ static void test_parsing(void)
 	CHECK_INT(fixed_length_shift(Q(100.0), -12), -7);
 }
 
+/* A small seeded generator (xorshift32): the same numbers on every machine. */
+static uint32_t next_random(uint32_t *state)
+{
+	uint32_t x = *state;
+	x ^= x << 13;
+	x ^= x >> 17;
+	x ^= x << 5;
+	return *state = x;
+}
+
+/* Operands worth checking: the edges of the range, and random numbers of every size. */
+static int32_t operand(uint32_t *state, int i)
+{
+	static const int32_t edges[] = {0,      1,     -1,     65535,     65536,     -65536,
+					32767,  32768, -32768, INT32_MAX, -INT32_MAX, INT32_MIN,
+					0x7FFF0000, -0x7FFF0000, 0x00010001, -0x00010001};
+	int n = (int)(sizeof edges / sizeof edges[0]);
+	if (i < n)
+		return edges[i];
+	/* Random bits shifted to a random size, with a random sign. */
+	return (int32_t)(next_random(state) >> (next_random(state) % 32u));
+}
+
+/* The M0's narrow kernels (16 x 16 products, shift-and-subtract division) give exactly
+ * the bits of 64-bit arithmetic, which the host build uses: both builds must write the
+ * same image. Checked on every build, whichever form its fixed_mul uses. */
+static void test_narrow_kernels(void)
+{
+	uint32_t state = 12345u;
+	int i, j, mismatches = 0, checked = 0;
+	for (i = 0; i < 400; i++) {
+		for (j = 0; j < 16; j++) {
+			int32_t a = operand(&state, i), b = operand(&state, j + (i < 16 ? 0 : 16));
+			uint32_t d = (uint32_t)b == 0 ? 1u : (b < 0 ? 0u - (uint32_t)b : (uint32_t)b);
+			uint64_t n = ((uint64_t)(uint32_t)a << 16) | (uint32_t)b;
+			uint64_t q = n / d;
+			checked++;
+			if (fixed_wide_mul_narrow(a, b) != (int64_t)a * b)
+				mismatches++;
+			if (fixed_umul64((uint32_t)a, (uint32_t)b) != (uint64_t)(uint32_t)a * (uint32_t)b)
+				mismatches++;
+			if (fixed_udiv_narrow(n, d) != (q > UINT32_MAX ? UINT32_MAX : (uint32_t)q))
+				mismatches++;
+			/* And the kernels built on them, against their 64-bit definitions. */
+			if (fixed_mul(a, b) != fixed_saturate(((int64_t)a * b + 0x8000) >> 16))
+				mismatches++;
+			if (b != 0 && fixed_div(a, b) !=
+					      fixed_saturate(fixed_round_div((int64_t)a * 65536, b)))
+				mismatches++;
+		}
+	}
+	CHECK_INT(mismatches, 0);
+	CHECK_INT(checked, 6400);
+	/* Division's saturation and rounding edges. */
+	CHECK(fixed_udiv_narrow((uint64_t)1 << 32, 1) == UINT32_MAX);
+	CHECK(fixed_udiv_narrow(((uint64_t)1 << 32) - 1, 1) == UINT32_MAX);
+	CHECK(fixed_udiv_narrow(UINT64_MAX, UINT32_MAX) == UINT32_MAX);
+	CHECK(fixed_udiv_narrow(UINT64_MAX - 1, UINT32_MAX) == UINT32_MAX);
+	CHECK(fixed_udiv_narrow(7, 2) == 3);
+	CHECK_INT(fixed_div(Q(1.0), -Q(3.0)), -21845);
+	CHECK_INT(fixed_div(3, 2 * 65536), 2); /* 1.5 LSB rounds away from zero */
+	CHECK_INT(fixed_div(-3, 2 * 65536), -2);
+	CHECK_INT(fixed_div(1, -65536), -1); /* a negative divisor rounds the same way */
+	CHECK_INT(fixed_div(3, -2 * 65536), -2);
+	/* scale2: w times a small factor, exactly, and saturation past 2^63. */
+	CHECK(fixed_scale2((int64_t)3 << 40, Q(0.5)) == (int64_t)3 << 39);
+	CHECK(fixed_scale2(-((int64_t)3 << 40), Q(0.5)) == -((int64_t)3 << 39));
+	CHECK(fixed_scale2((int64_t)1 << 62, Q(4.0)) == INT64_MAX);
+	CHECK(fixed_scale2(((int64_t)5 << 50) + 12345, 7) == (((int64_t)5 << 50) + 12345) / 65536 * 7);
+}
+
 void suite_fixed(void)
 {
+	test_narrow_kernels();
 	test_products();
 	test_roots();
 	test_exp_pow_tan();

@@ -1,0 +1,101 @@
+#!/bin/sh
+# mcu.sh - the microcontroller build under qemu: the same bytes as the host's fixed-point
+# build (build/rt-fixed) on a Cortex-M0 and a Cortex-M3, and the budgets of issue #5:
+# no heap and no soft float linked, M0 text <= 24 KiB, data + bss + worst-case stack
+# <= 16 KiB. Run by `make test-mcu` (and by `make test` when the cross compiler exists).
+cd "$(dirname "$0")/.." || exit 1
+passed=0
+failed=0
+tmp=$(mktemp -d) || exit 1
+trap 'rm -rf "$tmp"' EXIT
+
+ok() {
+	passed=$((passed + 1))
+}
+bad() {
+	echo "FAIL: $*"
+	failed=$((failed + 1))
+}
+check() { # check DESCRIPTION COMMAND...
+	what=$1
+	shift
+	if "$@"; then ok; else bad "$what"; fi
+}
+
+TEXT_LIMIT=24576 # bytes of flash code on the M0 (24 KiB)
+RAM_LIMIT=16384  # bytes of RAM on both boards (16 KiB)
+DEPTH=$(sed -n 's/^#define RT_MAX_DEPTH \([0-9]*\).*/\1/p' src/config.h)
+
+# run_mcu BOARD ELF OUT ERR ARGS...: rt under qemu, its argv given by semihosting.
+run_mcu() {
+	board=$1 elf=$2 out=$3 err=$4
+	shift 4
+	args="arg=rt"
+	for a in "$@"; do args="$args,arg=$a"; done
+	timeout 600 qemu-system-arm -M "$board" -display none -serial none -monitor none \
+		-semihosting-config "enable=on,target=native,$args" -kernel "$elf" >"$out" 2>"$err"
+}
+
+for cpu in m0 m3; do
+	elf=build/mcu/rt-$cpu.elf
+	case $cpu in m0) board=microbit ;; m3) board=mps2-an385 ;; esac
+
+	# Budgets, from the linked ELF.
+	syms=$(arm-none-eabi-nm "$elf" | awk '{print $NF}')
+	for bad_sym in malloc calloc realloc free _sbrk _malloc_r; do
+		printf '%s\n' "$syms" | grep -qx "$bad_sym" && bad "$cpu: $bad_sym is linked" || ok
+	done
+	floats=$(printf '%s\n' "$syms" | grep -E '^__aeabi_[fd]|^__(add|sub|mul|div)[sd]f3$' | tr '\n' ' ')
+	check "$cpu: soft-float routines linked: $floats" [ -z "$floats" ]
+	set -- $(arm-none-eabi-size "$elf" | awk 'NR == 2 {print $1, $2, $3}')
+	text=$1 data=$2 bss=$3
+	stack=$(python3 tools/mcu-stack --depth "$DEPTH" "build/mcu/$cpu" "$elf" |
+		sed -n 's/^worst_case_stack_bytes: //p')
+	check "$cpu: worst-case stack not derived" [ -n "$stack" ]
+	ram=$((data + bss + ${stack:-$RAM_LIMIT}))
+	echo "$cpu: text $text, data $data, bss $bss, worst-case stack ${stack:-?} (depth $DEPTH): RAM $ram of $RAM_LIMIT"
+	check "$cpu: RAM $ram > $RAM_LIMIT" [ "$ram" -le "$RAM_LIMIT" ]
+	if [ "$cpu" = m0 ]; then
+		check "m0: text $text > $TEXT_LIMIT" [ "$text" -le "$TEXT_LIMIT" ]
+	fi
+
+	# Renders: the bytes the host's fixed-point build writes, with the same options.
+	# mcu-glass: refraction and absorption; polyhedron: convex polyhedra; cones --ascii:
+	# the ASCII preview; mcu-demo: the benchmark, also as object IDs.
+	n=0
+	for run in "scenes/mcu-demo.nff" "scenes/mcu-glass.nff" "-s 160x120 scenes/polyhedron.nff" \
+		"--ascii --cols 72 scenes/cones.nff" "--ids scenes/mcu-demo.nff" \
+		"-d 8 -s 40x30 scenes/mcu-glass.nff"; do
+		n=$((n + 1))
+		# shellcheck disable=SC2086 # the options split into words on purpose
+		run_mcu "$board" "$elf" "$tmp/mcu.out" "$tmp/mcu.err" $run
+		status=$?
+		# shellcheck disable=SC2086
+		./build/rt-fixed $run >"$tmp/host.out" 2>"$tmp/host.err"
+		check "$cpu: rt $run: exit status $status" [ "$status" -eq 0 ]
+		check "$cpu: rt $run: output differs from build/rt-fixed" cmp -s "$tmp/mcu.out" "$tmp/host.out"
+		check "$cpu: rt $run: empty output" [ -s "$tmp/mcu.out" ]
+	done
+
+	# Errors: the same message and status as on the host.
+	for scene in tests/bad/20-missing-number.nff tests/bad/64-resolution-zero.nff; do
+		run_mcu "$board" "$elf" "$tmp/mcu.out" "$tmp/mcu.err" "$scene"
+		status=$?
+		./build/rt-fixed "$scene" >"$tmp/host.out" 2>"$tmp/host.err"
+		check "$cpu: $scene: status $status, not 1" [ "$status" -eq 1 ]
+		check "$cpu: $scene: message differs from the host's" cmp -s "$tmp/mcu.err" "$tmp/host.err"
+		check "$cpu: $scene: output written" [ ! -s "$tmp/mcu.out" ]
+	done
+	# Past the MCU's capacities: a clear error naming the capacity, not a crash.
+	run_mcu "$board" "$elf" "$tmp/mcu.out" "$tmp/mcu.err" scenes/glass.nff
+	status=$?
+	check "$cpu: glass.nff: status $status, not 1" [ "$status" -eq 1 ]
+	check "$cpu: glass.nff: no capacity named" grep -q 'RT_MAX_[A-Z]* = ' "$tmp/mcu.err"
+	run_mcu "$board" "$elf" "$tmp/mcu.out" "$tmp/mcu.err" scenes/mcu-demo.nff --rows
+	check "$cpu: a usage error gives status 2" [ $? -eq 2 ]
+	run_mcu "$board" "$elf" "$tmp/mcu.out" "$tmp/mcu.err" no-such-file.nff
+	check "$cpu: a missing file gives status 1" [ $? -eq 1 ]
+	check "$cpu: a missing file is named" grep -q '^rt: no-such-file.nff: cannot open' "$tmp/mcu.err"
+done
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
