@@ -149,35 +149,41 @@ lint:
 # a Cortex-M3 (qemu `mps2-an385`, given the same 16 KiB). `make test-mcu` runs it under
 # qemu and compares its output with build/rt-fixed; docs/mcu.md has the budgets.
 MCU_HOST_ONLY = src/main.c src/output.c src/term.c src/png.c src/stdio_io.c src/bvh.c
-MCU_SRC = $(filter-out $(MCU_HOST_ONLY),$(SRC)) $(wildcard src/mcu/*.c)
+# The C library stand-ins are built apart, without link-time optimisation: the calls to
+# memcpy and memset the compiler itself emits must find them after it.
+MCU_LIBC = src/mcu/libc.c
+MCU_SRC = $(filter-out $(MCU_HOST_ONLY),$(SRC)) $(filter-out $(MCU_LIBC),$(wildcard src/mcu/*.c))
 # Capacities for 16 KiB of RAM: the scene, row buffers and stack must all fit.
 MCU_CAPACITIES = -DRT_MAX_OBJECTS=24 -DRT_MAX_LIGHTS=4 -DRT_MAX_MATERIALS=8 \
 	-DRT_MAX_VERTICES=32 -DRT_MAX_POLY_VERTS=16 -DRT_MAX_PLANES=40 -DRT_MAX_HEDRON_PLANES=12 \
-	-DRT_MAX_WIDTH=160 -DRT_MAX_HEIGHT=160 -DRT_MAX_SCENE_WIDTH=8192 -DRT_MAX_SCENE_HEIGHT=8192 -DRT_MAX_MEDIA=4 -DRT_CORNER_SAMPLING=0
+	-DRT_MAX_WIDTH=160 -DRT_MAX_HEIGHT=160 -DRT_MAX_SCENE_WIDTH=8192 -DRT_MAX_SCENE_HEIGHT=8192 \
+	-DRT_MAX_MEDIA=4 -DRT_CORNER_SAMPLING=0 -DRT_SHAPE_CONE=0
 MCU_DEFINES = -DRT_REAL_FIXED -DRT_USE_BVH=0 $(MCU_CAPACITIES)
 # -fsigned-char: plain char as on the x86-64 host, so both builds read bytes alike.
 MCU_CFLAGS = $(WARN) -Os -mthumb -mfloat-abi=soft -ffreestanding -fsigned-char \
-	-ffunction-sections -fdata-sections -fstack-usage -fcallgraph-info=su -Isrc -Isrc/mcu
-MCU_LDFLAGS = -nostdlib -nostartfiles -Wl,--gc-sections -Lsrc/mcu
+	-ffunction-sections -fdata-sections -Isrc -Isrc/mcu $(MCU_DEFINES)
+# The whole program is optimised as one unit (-flto, one partition): 23% less flash than
+# file by file. Its stack use per function and call graph land in build/mcu/CPU/ for
+# tools/mcu-stack.
+MCU_LDFLAGS = -flto -flto-partition=one -fstack-usage -fcallgraph-info=su \
+	-nostdlib -nostartfiles -Wl,--gc-sections -Lsrc/mcu
 MCU_CPU_m0 = cortex-m0
 MCU_CPU_m3 = cortex-m3
 MCU_BOARD_m0 = microbit
 MCU_BOARD_m3 = mps2-an385
-MCU_OBJ_m0 = $(MCU_SRC:src/%.c=build/mcu/m0/%.o)
-MCU_OBJ_m3 = $(MCU_SRC:src/%.c=build/mcu/m3/%.o)
 
-build/mcu/m0/%.o: src/%.c
+build/mcu/%/libc.o: $(MCU_LIBC)
 	@mkdir -p $(@D)
-	$(MCU_CC) $(MCU_CFLAGS) -mcpu=$(MCU_CPU_m0) $(MCU_DEFINES) -MMD -MP -c -o $@ $<
-build/mcu/m3/%.o: src/%.c
-	@mkdir -p $(@D)
-	$(MCU_CC) $(MCU_CFLAGS) -mcpu=$(MCU_CPU_m3) $(MCU_DEFINES) -MMD -MP -c -o $@ $<
+	$(MCU_CC) $(MCU_CFLAGS) -mcpu=$(MCU_CPU_$*) -c -o $@ $(MCU_LIBC)
 .SECONDEXPANSION:
-build/mcu/rt-%.elf: $$(MCU_OBJ_$$*) src/mcu/sections.ld src/mcu/$$(MCU_BOARD_$$*).ld
-	$(MCU_CC) -mcpu=$(MCU_CPU_$*) -mthumb $(MCU_LDFLAGS) -T $(MCU_BOARD_$*).ld \
-		-Wl,-Map=build/mcu/rt-$*.map -o $@ $(MCU_OBJ_$*) -lgcc
+build/mcu/rt-%.elf: $(MCU_SRC) $(wildcard src/*.h src/mcu/*.h) build/mcu/%/libc.o \
+		src/mcu/sections.ld src/mcu/$$(MCU_BOARD_$$*).ld
+	@mkdir -p build/mcu/$*
+	rm -f build/mcu/$*/*.ci build/mcu/$*/*.su
+	$(MCU_CC) $(MCU_CFLAGS) -mcpu=$(MCU_CPU_$*) -flto $(MCU_LDFLAGS) -T $(MCU_BOARD_$*).ld \
+		-Wl,-Map=build/mcu/rt-$*.map -dumpdir build/mcu/$*/ -o $@ $(MCU_SRC) \
+		build/mcu/$*/libc.o -lgcc
 
-.SECONDARY: $(MCU_OBJ_m0) $(MCU_OBJ_m3)
 mcu: build/mcu/rt-m0.elf build/mcu/rt-m3.elf
 
 # The instruction-counting qemu plugin (tools/mcu-cost), built for the host.
@@ -207,4 +213,4 @@ clean:
 
 .PHONY: all mcu mcu-ready test-mcu test install uninstall clean fuzz fuzz-merge variants algorithms check-clang lint
 
--include $(OBJ:.o=.d) $(TEST_OBJ:.o=.d) $(MCU_OBJ_m0:.o=.d) $(MCU_OBJ_m3:.o=.d)
+-include $(OBJ:.o=.d) $(TEST_OBJ:.o=.d)

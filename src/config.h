@@ -54,6 +54,12 @@
 #define RT_TOKEN_MAX 64 /* longest token in a scene file, in bytes */
 #endif
 
+/* Cones and cylinders (NFF `c`); 0 leaves them out, for a small target whose flash is
+ * short (a scene with one is then refused, naming this switch). */
+#ifndef RT_SHAPE_CONE
+#define RT_SHAPE_CONE 1
+#endif
+
 #ifndef RT_CORNER_SAMPLING
 #define RT_CORNER_SAMPLING 1 /* --spd's corner rays (a second row buffer); 0 leaves them out */
 #endif

@@ -2,23 +2,13 @@
  * in integer arithmetic only (the fixed build compiles with -mgeneral-regs-only).
  * Series run in Q4.28 or Q2.30 inside int64, so their rounding stays below 1 LSB of the
  * Q16.16 result. See LICENSE for copyright and licence. */
+/* On the M0 the kernels of fixed.h are defined here, once. */
+#define FIXED_KERNEL_BODIES
 #include "fixed.h"
 
 /* Plain integer code: every build compiles it (the unit tests check it in each), and
  * only the fixed build's `real` uses it. */
 #include <stdio.h>
-
-#if FIXED_NARROW
-int64_t fixed_wide_mul(int32_t a, int32_t b)
-{
-	return fixed_wide_mul_narrow(a, b);
-}
-
-uint32_t fixed_udiv(uint64_t n, uint32_t d)
-{
-	return fixed_udiv_narrow(n, d);
-}
-#endif
 
 uint64_t fixed_isqrt64(uint64_t x)
 {
@@ -80,7 +70,7 @@ int32_t fixed_ratio2(int64_t a, int64_t b)
 	}
 	if (b == 0)
 		return negative ? -FIXED_MAX : FIXED_MAX;
-	q = (a * 65536 + b / 2) / b;
+	q = (int64_t)fixed_udiv64((uint64_t)(a * 65536 + b / 2), (uint64_t)b);
 	return fixed_saturate(negative ? -q : q);
 }
 
@@ -157,10 +147,10 @@ int32_t fixed_tan(int32_t x)
 	int64_t t = (int64_t)x * 4096, t2 = t * t >> 28, s = (int64_t)1 << 28, c = (int64_t)1 << 28;
 	int k;
 	for (k = 15; k >= 3; k -= 2)
-		s = ((int64_t)1 << 28) - (t2 * s >> 28) / ((int64_t)k * (k - 1));
+		s = ((int64_t)1 << 28) - fixed_div64(t2 * s >> 28, (int64_t)k * (k - 1));
 	s = t * s >> 28;
 	for (k = 16; k >= 2; k -= 2)
-		c = ((int64_t)1 << 28) - (t2 * c >> 28) / ((int64_t)k * (k - 1));
+		c = ((int64_t)1 << 28) - fixed_div64(t2 * c >> 28, (int64_t)k * (k - 1));
 	if (c <= 0)
 		return FIXED_MAX;
 	return fixed_saturate(fixed_round_div(s * 65536, c));
@@ -222,7 +212,7 @@ int32_t fixed_parse(const char *s, const char **end, int shift, int *overflow)
 		mantissa *= 10;
 	}
 	while (exponent < -18 || (binary > 0 && mantissa >= ((uint64_t)1 << (62 - binary)))) {
-		mantissa = (mantissa + 5) / 10;
+		mantissa = fixed_udiv64(mantissa + 5, 10);
 		exponent++;
 	}
 	for (; exponent < 0; exponent++)

@@ -18,14 +18,6 @@ static inline int32_t fixed_saturate(int64_t v)
 	return v > INT32_MAX ? INT32_MAX : v < -INT32_MAX ? -INT32_MAX : (int32_t)v;
 }
 
-/* Divides with rounding to nearest (halves away from zero). */
-static inline int64_t fixed_round_div(int64_t n, int64_t d)
-{
-	int64_t half = (d < 0 ? -d : d) / 2;
-	/* Away from zero: the half goes the way n points (C's division truncates). */
-	return (n < 0 ? n - half : n + half) / d;
-}
-
 /* A Cortex-M0 (ARMv6-M) multiplies only 32 x 32 -> 32 bits and cannot divide: there a
  * 64-bit product is a call to a general 64 x 64 routine (~40 instructions) and a 64-bit
  * quotient one to a general 64 / 64 routine (~500). The narrow forms below build the
@@ -124,25 +116,98 @@ static inline uint32_t fixed_udiv_narrow(uint64_t n, uint32_t d)
 	return q;
 }
 
-#if FIXED_NARROW
-/* Out of line here: one copy of each kernel keeps the M0's flash small. */
-int64_t fixed_wide_mul(int32_t a, int32_t b);
-uint32_t fixed_udiv(uint64_t n, uint32_t d);
-#else
-static inline int64_t fixed_wide_mul(int32_t a, int32_t b)
+/* floor(n / d) for d > 0, 64 bits by 64: one quotient bit per step, from the top one. */
+static inline uint64_t fixed_udiv64_narrow(uint64_t n, uint64_t d)
 {
-	return (int64_t)a * b;
+	int shift = fixed_bit_length(n) - fixed_bit_length(d), i;
+	uint64_t q = 0;
+	if (shift < 0)
+		return 0;
+	d <<= shift; /* fits: it has as many bits as n now */
+	for (i = 0; i <= shift; i++) {
+		q <<= 1;
+		if (n >= d) {
+			n -= d;
+			q |= 1;
+		}
+		d >>= 1;
+	}
+	return q;
 }
 
-static inline uint32_t fixed_udiv(uint64_t n, uint32_t d)
+/* The kernels. On the M0 each is one out-of-line function, defined once in fixed.c
+ * (which sets FIXED_KERNEL_BODIES): inlined copies in every file overflow its flash.
+ * Elsewhere they are inline, and the 64-bit ones are the compiler's own arithmetic. */
+#if FIXED_NARROW && defined(__GNUC__)
+#define FIXED_KERNEL __attribute__((noinline))
+#elif FIXED_NARROW
+#define FIXED_KERNEL
+#else
+#define FIXED_KERNEL static inline
+#endif
+FIXED_KERNEL int64_t fixed_wide_mul(int32_t a, int32_t b);     /* a b, exactly */
+FIXED_KERNEL uint32_t fixed_udiv(uint64_t n, uint32_t d);      /* n / d, or UINT32_MAX */
+FIXED_KERNEL uint64_t fixed_udiv64(uint64_t n, uint64_t d);    /* n / d */
+FIXED_KERNEL int64_t fixed_div64(int64_t n, int64_t d);        /* n / d, truncated */
+FIXED_KERNEL int64_t fixed_round_div(int64_t n, int64_t d);    /* n / d, rounded */
+FIXED_KERNEL int32_t fixed_round_div_sat(int64_t n, int32_t d); /* rounded, saturated */
+FIXED_KERNEL int32_t fixed_mul(int32_t a, int32_t b);
+FIXED_KERNEL int32_t fixed_dot3(int32_t ax, int32_t ay, int32_t az, int32_t bx, int32_t by,
+				int32_t bz);
+FIXED_KERNEL int32_t fixed_div(int32_t a, int32_t b);
+FIXED_KERNEL int32_t fixed_abs(int32_t a);
+FIXED_KERNEL int32_t fixed_from_int(long i);
+FIXED_KERNEL int32_t fixed_div2(int64_t w, int32_t b);
+FIXED_KERNEL int64_t fixed_scale2(int64_t w, int32_t a);
+
+#if !FIXED_NARROW || defined(FIXED_KERNEL_BODIES)
+FIXED_KERNEL int64_t fixed_wide_mul(int32_t a, int32_t b)
 {
+#if FIXED_NARROW
+	return fixed_wide_mul_narrow(a, b);
+#else
+	return (int64_t)a * b;
+#endif
+}
+
+FIXED_KERNEL uint32_t fixed_udiv(uint64_t n, uint32_t d)
+{
+#if FIXED_NARROW
+	return fixed_udiv_narrow(n, d);
+#else
 	uint64_t q = n / d;
 	return q > UINT32_MAX ? UINT32_MAX : (uint32_t)q;
-}
 #endif
+}
+
+FIXED_KERNEL uint64_t fixed_udiv64(uint64_t n, uint64_t d)
+{
+#if FIXED_NARROW
+	return fixed_udiv64_narrow(n, d);
+#else
+	return n / d;
+#endif
+}
+
+
+/* n / d truncated towards zero, as C's `/` (d != 0), through the kernels above. */
+FIXED_KERNEL int64_t fixed_div64(int64_t n, int64_t d)
+{
+	uint64_t q = fixed_udiv64(n < 0 ? 0u - (uint64_t)n : (uint64_t)n,
+				  d < 0 ? 0u - (uint64_t)d : (uint64_t)d);
+	return (n < 0) != (d < 0) ? -(int64_t)q : (int64_t)q;
+}
+
+/* n / d rounded to nearest, halves away from zero (|n| + |d| / 2 must fit 63 bits). */
+FIXED_KERNEL int64_t fixed_round_div(int64_t n, int64_t d)
+{
+	int64_t half = (d < 0 ? -d : d) / 2;
+	/* Away from zero: the half goes the way n points (the division truncates). */
+	return fixed_div64(n < 0 ? n - half : n + half, d);
+}
 
 /* n / d rounded to nearest, halves away from zero, saturated to Q16.16's range. */
-static inline int32_t fixed_round_div_sat(int64_t n, int32_t d)
+FIXED_KERNEL int32_t fixed_round_div_sat(int64_t n, int32_t d)
 {
 	uint64_t magnitude = n < 0 ? 0u - (uint64_t)n : (uint64_t)n;
 	uint32_t divisor = d < 0 ? 0u - (uint32_t)d : (uint32_t)d;
@@ -156,13 +221,13 @@ static inline int32_t fixed_round_div_sat(int64_t n, int32_t d)
 	return (n < 0) != (d < 0) ? -(int32_t)q : (int32_t)q;
 }
 
-static inline int32_t fixed_mul(int32_t a, int32_t b)
+FIXED_KERNEL int32_t fixed_mul(int32_t a, int32_t b)
 {
 	return fixed_saturate((fixed_wide_mul(a, b) + 0x8000) >> 16);
 }
 
 /* A dot product summed in 64 bits and rounded once. */
-static inline int32_t fixed_dot3(int32_t ax, int32_t ay, int32_t az, int32_t bx, int32_t by,
+FIXED_KERNEL int32_t fixed_dot3(int32_t ax, int32_t ay, int32_t az, int32_t bx, int32_t by,
 				 int32_t bz)
 {
 	return fixed_saturate(
@@ -170,25 +235,25 @@ static inline int32_t fixed_dot3(int32_t ax, int32_t ay, int32_t az, int32_t bx,
 		16);
 }
 
-static inline int32_t fixed_div(int32_t a, int32_t b)
+FIXED_KERNEL int32_t fixed_div(int32_t a, int32_t b)
 {
 	if (b == 0)
 		return a >= 0 ? FIXED_MAX : -FIXED_MAX;
 	return fixed_round_div_sat((int64_t)a * 65536, b);
 }
 
-static inline int32_t fixed_abs(int32_t a)
+FIXED_KERNEL int32_t fixed_abs(int32_t a)
 {
 	return a < 0 ? (a == INT32_MIN ? INT32_MAX : -a) : a;
 }
 
-static inline int32_t fixed_from_int(long i)
+FIXED_KERNEL int32_t fixed_from_int(long i)
 {
 	return i > 32767 ? FIXED_MAX : i < -32767 ? -FIXED_MAX : (int32_t)(i * 65536);
 }
 
 /* Q32.32 (a squared length) divided by Q16.16 gives Q16.16. */
-static inline int32_t fixed_div2(int64_t w, int32_t b)
+FIXED_KERNEL int32_t fixed_div2(int64_t w, int32_t b)
 {
 	if (b == 0)
 		return w >= 0 ? FIXED_MAX : -FIXED_MAX;
@@ -197,7 +262,7 @@ static inline int32_t fixed_div2(int64_t w, int32_t b)
 
 /* w (Q32.32) times a (Q16.16) as Q32.32, saturating when the product could pass 2^63
  * (a bit-length test: no 64-bit division). */
-static inline int64_t fixed_scale2(int64_t w, int32_t a)
+FIXED_KERNEL int64_t fixed_scale2(int64_t w, int32_t a)
 {
 	int64_t high = w / 65536;
 	uint64_t mh = high < 0 ? 0u - (uint64_t)high : (uint64_t)high;
@@ -211,6 +276,8 @@ static inline int64_t fixed_scale2(int64_t w, int32_t a)
 	product = (fixed_umul64((uint32_t)(mh >> 32), ma) << 32) + fixed_umul64((uint32_t)mh, ma);
 	return (high < 0) != (a < 0) ? -(int64_t)product : (int64_t)product;
 }
+
+#endif
 
 /* Rounded integer square root of a 64-bit number. */
 uint64_t fixed_isqrt64(uint64_t x);

@@ -14,8 +14,10 @@ int object_intersect(const scene *s, int index, const ray *r, real tmin, real tm
 	case SHAPE_POLYGON:
 	case SHAPE_PATCH:
 		return polygon_intersect(s, o, r, tmin, tmax, h);
+#if RT_SHAPE_CONE
 	case SHAPE_CONE:
 		return cone_intersect(o, r, tmin, tmax, h);
+#endif
 	case SHAPE_HEDRON:
 		return hedron_intersect(s, o, r, tmin, tmax, h);
 	case SHAPE_PLANE:

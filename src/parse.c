@@ -615,6 +615,7 @@ static int parse_polygon(parser *p, int patch)
 	return 1;
 }
 
+#if RT_SHAPE_CONE
 static int parse_cone(parser *p)
 {
 	int line = p->lx.tok_line;
@@ -663,6 +664,7 @@ static int parse_cone(parser *p)
 	p->s->object_count++;
 	return 1;
 }
+#endif
 
 /* Adds the half-space n.x <= d to the plane pool, normalised; `line` is the entity's
  * (a capacity error names it; a zero normal is reported at its own row). */
@@ -841,7 +843,11 @@ static int parse_entity(parser *p)
 	if (strcmp(cmd, "pp") == 0)
 		return parse_polygon(p, 1);
 	if (strcmp(cmd, "c") == 0)
+#if RT_SHAPE_CONE
 		return parse_cone(p);
+#else
+		return fail(&p->lx, p->lx.tok_line, "cones are left out of this build (RT_SHAPE_CONE)");
+#endif
 	if (strcmp(cmd, "polyhedron") == 0)
 		return parse_hedron(p);
 	if (strcmp(cmd, "box") == 0)

@@ -7,6 +7,7 @@
 
 #include <stdio.h>
 
+#include "fixed.h"
 #include "image.h"
 
 const char preview_ramp[] = " .:-=+*#%@";
@@ -38,7 +39,9 @@ void preview_size(int columns, int scene_width, int scene_height, int *width, in
 {
 	/* Square pixels, two to a cell: the pixel rows the aspect asks for, rounded to the
 	 * nearest, then up to whole cells. */
-	long pixels = ((long)columns * scene_height + scene_width / 2) / scene_width;
+	long pixels = (long)fixed_udiv64((uint64_t)columns * (uint64_t)scene_height +
+					       (uint64_t)(scene_width / 2),
+				       (uint64_t)scene_width);
 	long cells = (pixels + 1) / 2;
 	*width = columns;
 	*height = (int)(cells < 1 ? 2 : 2 * (cells > RT_MAX_HEIGHT / 2 ? RT_MAX_HEIGHT / 2 : cells));
@@ -63,8 +66,11 @@ static int palette_index(const unsigned char *rgb)
 		cube_distance += (rgb[i] - level[c]) * (rgb[i] - level[c]);
 	}
 	/* Greys 232..255 are 8, 18, ..., 238. */
-	best_grey = (luma(rgb) - 3) / 10;
-	best_grey = best_grey < 0 ? 0 : best_grey > 23 ? 23 : best_grey;
+	/* (luma - 3) / 10 by a multiply: exact for 0..252 (the error stays below 0.025),
+	 * and small cores have no divide. */
+	best_grey = luma(rgb) - 3;
+	best_grey = best_grey < 0 ? 0 : (best_grey * 205) >> 11;
+	best_grey = best_grey > 23 ? 23 : best_grey;
 	grey_value = 8 + 10 * best_grey;
 	for (i = 0; i < 3; i++)
 		grey_distance += (rgb[i] - grey_value) * (rgb[i] - grey_value);

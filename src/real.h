@@ -76,6 +76,8 @@ typedef int32_t real;
 typedef int64_t real2; /* Q32.32: squares and products of lengths */
 #define REAL_NAME "Q16.16 fixed point"
 #define REAL_FIXED 1
+/* Small flash (the M0): vec.h's operations become single out-of-line copies (vec.c). */
+#define REAL_OUTLINE FIXED_NARROW
 #define REAL_C(x) ((real)((x) * 65536.0 + ((x) < 0 ? -0.5 : 0.5)))
 #define REAL_MAX ((real)0x7FFFFFFF)
 #define real_mul(a, b) fixed_mul((a), (b))
@@ -162,6 +164,7 @@ static inline real real_ldexp_(real x, int e)
 	return e ? x * real_pow(REAL_C(2.0), (real)e) : x;
 }
 #define REAL_FIXED 0
+#define REAL_OUTLINE 0
 #define real_mul(a, b) ((a) * (b))
 #define real_add(a, b) ((a) + (b))
 #define real_div(a, b) ((a) / (b))

@@ -43,7 +43,7 @@ void scene_measure(const scene *s, real *extent, real *feature)
 		if (o->kind == SHAPE_SPHERE) {
 			cover(extent, o->u.sphere.center, o->u.sphere.radius);
 			*feature = real_min(*feature, o->u.sphere.radius);
-		} else if (o->kind == SHAPE_CONE) {
+		} else if (RT_SHAPE_CONE && o->kind == SHAPE_CONE) {
 			real r = real_max(o->u.cone.base_radius, o->u.cone.apex_radius);
 			cover(extent, o->u.cone.base, r);
 			cover(extent, vec_madd(o->u.cone.base, o->u.cone.length, o->u.cone.axis), r);

@@ -19,44 +19,72 @@ static inline vec3 vec_make(real x, real y, real z)
 	return v;
 }
 
+/* On the M0 (small flash) the larger operations are one out-of-line copy each, defined
+ * in vec.c (which sets VEC_BODIES); elsewhere they are inline. */
+#if REAL_OUTLINE && defined(__GNUC__)
+#define VEC_FUNCTION __attribute__((noinline))
+#elif REAL_OUTLINE
+#define VEC_FUNCTION
+#else
+#define VEC_FUNCTION static inline
+#endif
+VEC_FUNCTION vec3 vec_add(vec3 a, vec3 b);
+VEC_FUNCTION vec3 vec_sub(vec3 a, vec3 b);
+VEC_FUNCTION vec3 vec_scale(vec3 a, real s);
+VEC_FUNCTION vec3 vec_mul(vec3 a, vec3 b);
+VEC_FUNCTION vec3 vec_madd(vec3 a, real s, vec3 b);
+VEC_FUNCTION vec3 vec_cross(vec3 a, vec3 b);
+VEC_FUNCTION real2 vec_dot2(vec3 a, vec3 b);
+VEC_FUNCTION real vec_length(vec3 a);
+VEC_FUNCTION vec3 vec_div(vec3 a, real s);
+VEC_FUNCTION vec3 vec_normalize(vec3 a);
+VEC_FUNCTION real vec_max_abs(vec3 a);
+
+static inline vec3 vec_neg(vec3 a) { return vec_make(-a.x, -a.y, -a.z); }
+static inline real vec_dot(vec3 a, vec3 b)
+{
+	return real_dot3(a.x, a.y, a.z, b.x, b.y, b.z);
+}
+static inline real vec_get(vec3 a, int axis) { return axis == 0 ? a.x : axis == 1 ? a.y : a.z; }
+static inline int vec_is_finite(vec3 a)
+{
+	return real_isfinite(a.x) && real_isfinite(a.y) && real_isfinite(a.z);
+}
+
+#if !REAL_OUTLINE || defined(VEC_BODIES)
 /* Vector sums saturate in fixed point (real_add): a ray from far out on an infinite
  * plane may meet coordinates whose exact sum no longer fits, and wrapping would be
  * undefined behaviour. In floating point real_add is plain +. */
-static inline vec3 vec_add(vec3 a, vec3 b)
+VEC_FUNCTION vec3 vec_add(vec3 a, vec3 b)
 {
 	return vec_make(real_add(a.x, b.x), real_add(a.y, b.y), real_add(a.z, b.z));
 }
 
-static inline vec3 vec_sub(vec3 a, vec3 b)
+VEC_FUNCTION vec3 vec_sub(vec3 a, vec3 b)
 {
 	return vec_make(real_add(a.x, -b.x), real_add(a.y, -b.y), real_add(a.z, -b.z));
 }
-static inline vec3 vec_neg(vec3 a) { return vec_make(-a.x, -a.y, -a.z); }
 
-static inline vec3 vec_scale(vec3 a, real s)
+VEC_FUNCTION vec3 vec_scale(vec3 a, real s)
 {
 	return vec_make(real_mul(a.x, s), real_mul(a.y, s), real_mul(a.z, s));
 }
 
 /* Component-wise product: colour times colour. */
-static inline vec3 vec_mul(vec3 a, vec3 b)
+VEC_FUNCTION vec3 vec_mul(vec3 a, vec3 b)
 {
 	return vec_make(real_mul(a.x, b.x), real_mul(a.y, b.y), real_mul(a.z, b.z));
 }
 
 /* a + s*b: a point moved along a direction, or a weighted colour sum. */
-static inline vec3 vec_madd(vec3 a, real s, vec3 b)
+VEC_FUNCTION vec3 vec_madd(vec3 a, real s, vec3 b)
 {
 	return vec_make(real_add(a.x, real_mul(s, b.x)), real_add(a.y, real_mul(s, b.y)),
 			real_add(a.z, real_mul(s, b.z)));
 }
 
-static inline real vec_dot(vec3 a, vec3 b)
-{
-	return real_dot3(a.x, a.y, a.z, b.x, b.y, b.z);
-}
 
-static inline vec3 vec_cross(vec3 a, vec3 b)
+VEC_FUNCTION vec3 vec_cross(vec3 a, vec3 b)
 {
 	return vec_make(real_mul(a.y, b.z) - real_mul(a.z, b.y),
 			real_mul(a.z, b.x) - real_mul(a.x, b.z),
@@ -64,38 +92,32 @@ static inline vec3 vec_cross(vec3 a, vec3 b)
 }
 
 /* a . b as a real2: for positions, whose products need the wider type in fixed point. */
-static inline real2 vec_dot2(vec3 a, vec3 b)
+VEC_FUNCTION real2 vec_dot2(vec3 a, vec3 b)
 {
 	return real_mul2(a.x, b.x) + real_mul2(a.y, b.y) + real_mul2(a.z, b.z);
 }
 
-static inline real vec_length(vec3 a) { return real2_sqrt(vec_dot2(a, a)); }
+VEC_FUNCTION real vec_length(vec3 a) { return real2_sqrt(vec_dot2(a, a)); }
 
 /* a / s, component by component: a reciprocal of a large s would keep few bits in
  * fixed point (1/2560 is 26 LSB in Q16.16, off by 1.6%). */
-static inline vec3 vec_div(vec3 a, real s)
+VEC_FUNCTION vec3 vec_div(vec3 a, real s)
 {
 	return vec_make(real_div(a.x, s), real_div(a.y, s), real_div(a.z, s));
 }
 
 /* Unit vector along a; the zero vector stays zero (callers reject it first). */
-static inline vec3 vec_normalize(vec3 a)
+VEC_FUNCTION vec3 vec_normalize(vec3 a)
 {
 	real len = vec_length(a);
 	return len > REAL_C(0.0) ? vec_div(a, len) : a;
 }
 
 /* Largest absolute component: the scale of a point's rounding error. */
-static inline real vec_max_abs(vec3 a)
+VEC_FUNCTION real vec_max_abs(vec3 a)
 {
 	return real_max(real_fabs(a.x), real_max(real_fabs(a.y), real_fabs(a.z)));
 }
-
-static inline real vec_get(vec3 a, int axis) { return axis == 0 ? a.x : axis == 1 ? a.y : a.z; }
-
-static inline int vec_is_finite(vec3 a)
-{
-	return real_isfinite(a.x) && real_isfinite(a.y) && real_isfinite(a.z);
-}
+#endif
 
 #endif

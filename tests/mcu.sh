@@ -60,11 +60,11 @@ for cpu in m0 m3; do
 	fi
 
 	# Renders: the bytes the host's fixed-point build writes, with the same options.
-	# mcu-glass: refraction and absorption; polyhedron: convex polyhedra; cones --ascii:
-	# the ASCII preview; mcu-demo: the benchmark, also as object IDs.
+	# mcu-glass: refraction and absorption; polyhedron: convex polyhedra, and --ascii the
+	# ASCII preview; mcu-demo: the benchmark, also as object IDs.
 	n=0
 	for run in "scenes/mcu-demo.nff" "scenes/mcu-glass.nff" "-s 160x120 scenes/polyhedron.nff" \
-		"--ascii --cols 72 scenes/cones.nff" "--ids scenes/mcu-demo.nff" \
+		"--ascii --cols 72 scenes/polyhedron.nff" "--ids scenes/mcu-demo.nff" \
 		"-d 8 -s 40x30 scenes/mcu-glass.nff"; do
 		n=$((n + 1))
 		# shellcheck disable=SC2086 # the options split into words on purpose
@@ -91,6 +91,10 @@ for cpu in m0 m3; do
 	status=$?
 	check "$cpu: glass.nff: status $status, not 1" [ "$status" -eq 1 ]
 	check "$cpu: glass.nff: no capacity named" grep -q 'RT_MAX_[A-Z]* = ' "$tmp/mcu.err"
+	# Cones are left out of the M0-sized build (RT_SHAPE_CONE=0): refused by name.
+	run_mcu "$board" "$elf" "$tmp/mcu.out" "$tmp/mcu.err" scenes/cones.nff
+	check "$cpu: cones.nff: status not 1" [ $? -eq 1 ]
+	check "$cpu: cones.nff: the switch is not named" grep -q 'RT_SHAPE_CONE' "$tmp/mcu.err"
 	run_mcu "$board" "$elf" "$tmp/mcu.out" "$tmp/mcu.err" scenes/mcu-demo.nff --rows
 	check "$cpu: a usage error gives status 2" [ $? -eq 2 ]
 	run_mcu "$board" "$elf" "$tmp/mcu.out" "$tmp/mcu.err" no-such-file.nff

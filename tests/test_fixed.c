@@ -128,6 +128,13 @@ static int32_t operand(uint32_t *state, int i)
 	return (int32_t)(next_random(state) >> (next_random(state) % 32u));
 }
 
+/* a * 65536 / b rounded to nearest, halves away from zero, in plain 64-bit arithmetic. */
+static int64_t reference_round_div(int32_t a, int32_t b)
+{
+	int64_t n = (int64_t)a * 65536, d = b, half = (d < 0 ? -d : d) / 2;
+	return (n < 0 ? n - half : n + half) / d;
+}
+
 /* The M0's narrow kernels (16 x 16 products, shift-and-subtract division) give exactly
  * the bits of 64-bit arithmetic, which the host build uses: both builds must write the
  * same image. Checked on every build, whichever form its fixed_mul uses. */
@@ -148,11 +155,14 @@ static void test_narrow_kernels(void)
 				mismatches++;
 			if (fixed_udiv_narrow(n, d) != (q > UINT32_MAX ? UINT32_MAX : (uint32_t)q))
 				mismatches++;
+			if (fixed_udiv64_narrow(n * 977, d) != n * 977 / d ||
+			    fixed_udiv64_narrow(n, n / 3 + 1) != n / (n / 3 + 1))
+				mismatches++;
 			/* And the kernels built on them, against their 64-bit definitions. */
 			if (fixed_mul(a, b) != fixed_saturate(((int64_t)a * b + 0x8000) >> 16))
 				mismatches++;
-			if (b != 0 && fixed_div(a, b) !=
-					      fixed_saturate(fixed_round_div((int64_t)a * 65536, b)))
+			/* Division rounds to nearest, halves away from zero. */
+			if (b != 0 && fixed_div(a, b) != fixed_saturate(reference_round_div(a, b)))
 				mismatches++;
 		}
 	}

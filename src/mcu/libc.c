@@ -70,17 +70,21 @@ int strcmp(const char *a, const char *b)
 long strtol(const char *restrict text, char **restrict end, int base)
 {
 	const char *p = text;
-	unsigned long value = 0, limit;
+	unsigned long value = 0, cut;
+	unsigned cut_digit;
 	int negative = 0, digits = 0, overflow = 0;
 	(void)base;
 	while (*p == ' ' || (*p >= '\t' && *p <= '\r'))
 		p++;
 	if (*p == '-' || *p == '+')
 		negative = *p++ == '-';
-	limit = negative ? (unsigned long)LONG_MAX + 1u : (unsigned long)LONG_MAX;
+	/* The largest magnitude is cut * 10 + cut_digit: constants, so no division here. */
+	cut = negative ? ((unsigned long)LONG_MAX + 1u) / 10u : (unsigned long)LONG_MAX / 10u;
+	cut_digit = negative ? (unsigned)(((unsigned long)LONG_MAX + 1u) % 10u)
+			     : (unsigned)((unsigned long)LONG_MAX % 10u);
 	for (; *p >= '0' && *p <= '9'; p++, digits++) {
 		unsigned d = (unsigned)(*p - '0');
-		if (value > (limit - d) / 10u)
+		if (value > cut || (value == cut && d > cut_digit))
 			overflow = 1;
 		else
 			value = value * 10u + d;
@@ -189,13 +193,35 @@ int vsnprintf(char *restrict buf, size_t size, const char *restrict fmt, va_list
 				fmt--;
 			continue;
 		}
-		/* Digits backwards into the end of the buffer. */
+		/* Digits backwards into the end of the buffer; no division (the M0 has none,
+		 * and the library's would cost flash): hex by shifts, decimal by counting
+		 * down powers of ten. */
 		n = (int)sizeof digits;
-		do {
-			unsigned d = (unsigned)(u % base);
-			digits[--n] = (char)(d < 10 ? '0' + d : (*fmt == 'x' ? 'a' : 'A') + d - 10);
-			u /= base;
-		} while (u);
+		if (base == 16) {
+			do {
+				unsigned d = (unsigned)(u & 15u);
+				digits[--n] = (char)(d < 10 ? '0' + d : (*fmt == 'x' ? 'a' : 'A') + d - 10);
+				u >>= 4;
+			} while (u);
+		} else {
+			static const unsigned long powers[] = {1000000000ul, 100000000ul, 10000000ul,
+							       1000000ul,    100000ul,    10000ul,
+							       1000ul,       100ul,       10ul, 1ul};
+			int i, started = 0;
+			for (i = 0; i < 10; i++) {
+				char d = '0';
+				while (u >= powers[i]) {
+					u -= powers[i];
+					d++;
+				}
+				if (d != '0' || started || i == 9) {
+					digits[sizeof digits - 10 + (size_t)i] = d;
+					if (!started)
+						n = (int)sizeof digits - 10 + i;
+					started = 1;
+				}
+			}
+		}
 		put_padded(&o, digits + n, sizeof digits - (size_t)n, width, left, pad);
 	}
 	if (size > 0)
