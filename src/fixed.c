@@ -120,7 +120,7 @@ static int64_t log2_fixed(int32_t x)
 	m = (int64_t)x << (30 - top);
 	result = (int64_t)(top - 16) * ((int64_t)1 << 24);
 	for (i = 23; i >= 0; i--) {
-		m = (int64_t)((uint64_t)m * (uint64_t)m >> 30); /* m is positive */
+		m = (int64_t)(fixed_umul64((uint32_t)m, (uint32_t)m) >> 30); /* 0 < m < 2^31 */
 		if (m >= ((int64_t)2 << 30)) {
 			m >>= 1;
 			result += (int64_t)1 << i;

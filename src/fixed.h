@@ -30,25 +30,44 @@ static inline int32_t fixed_saturate(int64_t v)
 #endif
 
 /* The exact 64-bit product a b from four 16 x 16 products: a = ah 2^16 + al with ah
- * signed and al in [0, 2^16), so every partial product fits 32 bits. The sum wraps
- * modulo 2^64 (unsigned), which is exact because the true product fits 63 bits. */
+ * signed and al in [0, 2^16), so every partial product fits 32 bits. Each cross product
+ * is added to the low word with its carry, all in 32-bit arithmetic (unsigned, where it
+ * wraps by design), which an M0 does in a few instructions each. */
 static inline int64_t fixed_wide_mul_narrow(int32_t a, int32_t b)
 {
 	int32_t ah = a >> 16, bh = b >> 16;
-	int32_t al = (int32_t)((uint32_t)a & 0xFFFFu), bl = (int32_t)((uint32_t)b & 0xFFFFu);
-	uint64_t high = (uint64_t)(int64_t)(ah * bh) << 32;
-	int64_t cross = (int64_t)(ah * bl) + (int64_t)(al * bh);
-	uint64_t low = (uint64_t)((uint32_t)al * (uint32_t)bl);
-	return (int64_t)(high + ((uint64_t)cross << 16) + low);
+	uint32_t al = (uint32_t)a & 0xFFFFu, bl = (uint32_t)b & 0xFFFFu;
+	uint32_t low = al * bl, high = (uint32_t)(ah * bh), shifted;
+	int32_t cross = (int32_t)al * bh;
+	shifted = (uint32_t)cross << 16;
+	low += shifted;
+	high += (uint32_t)(cross >> 16) + (low < shifted);
+	cross = ah * (int32_t)bl;
+	shifted = (uint32_t)cross << 16;
+	low += shifted;
+	high += (uint32_t)(cross >> 16) + (low < shifted);
+	return (int64_t)(((uint64_t)high << 32) | low);
 }
 
-/* The exact 64-bit product of two unsigned 32-bit numbers. */
+/* The exact 64-bit product of two unsigned 32-bit numbers, as fixed_wide_mul_narrow:
+ * four 16 x 16 products, the cross terms added with their carries. */
+static inline uint64_t fixed_umul64_narrow(uint32_t a, uint32_t b)
+{
+	uint32_t ah = a >> 16, al = a & 0xFFFFu, bh = b >> 16, bl = b & 0xFFFFu;
+	uint32_t low = al * bl, high = ah * bh, cross = al * bh, shifted = cross << 16;
+	low += shifted;
+	high += (cross >> 16) + (low < shifted);
+	cross = ah * bl;
+	shifted = cross << 16;
+	low += shifted;
+	high += (cross >> 16) + (low < shifted);
+	return ((uint64_t)high << 32) | low;
+}
+
 static inline uint64_t fixed_umul64(uint32_t a, uint32_t b)
 {
-#if defined(__ARM_ARCH_6M__)
-	uint32_t ah = a >> 16, al = a & 0xFFFFu, bh = b >> 16, bl = b & 0xFFFFu;
-	uint64_t cross = (uint64_t)(ah * bl) + (al * bh);
-	return ((uint64_t)(ah * bh) << 32) + (cross << 16) + al * bl;
+#if FIXED_NARROW
+	return fixed_umul64_narrow(a, b);
 #else
 	return (uint64_t)a * b;
 #endif
@@ -159,6 +178,17 @@ FIXED_KERNEL int32_t fixed_abs(int32_t a);
 FIXED_KERNEL int32_t fixed_from_int(long i);
 FIXED_KERNEL int32_t fixed_div2(int64_t w, int32_t b);
 FIXED_KERNEL int64_t fixed_scale2(int64_t w, int32_t a);
+
+/* For dividing several numbers by one d (a vector by its length): one division, then a
+ * product per number, within an LSB of dividing each (scale keeps 31 bits, not the 16 of
+ * a Q16.16 reciprocal). */
+typedef struct {
+	uint32_t scale; /* 2^(30 + bits of |d|) / |d|, in (2^30, 2^31]; 0 when d = 0 */
+	int shift;      /* 14 + bits of |d| */
+	int negative;   /* d < 0 */
+} fixed_reciprocal;
+FIXED_KERNEL fixed_reciprocal fixed_reciprocal_of(int32_t d);
+FIXED_KERNEL int32_t fixed_times_reciprocal(int32_t x, fixed_reciprocal r); /* x / d */
 
 #if !FIXED_NARROW || defined(FIXED_KERNEL_BODIES)
 FIXED_KERNEL int64_t fixed_wide_mul(int32_t a, int32_t b)
@@ -275,6 +305,30 @@ FIXED_KERNEL int64_t fixed_scale2(int64_t w, int32_t a)
 	/* |high| |a| < 2^63 here: split |high| into 32-bit halves, each times |a| exactly. */
 	product = (fixed_umul64((uint32_t)(mh >> 32), ma) << 32) + fixed_umul64((uint32_t)mh, ma);
 	return (high < 0) != (a < 0) ? -(int64_t)product : (int64_t)product;
+}
+
+FIXED_KERNEL fixed_reciprocal fixed_reciprocal_of(int32_t d)
+{
+	fixed_reciprocal r;
+	uint32_t magnitude = d < 0 ? 0u - (uint32_t)d : (uint32_t)d;
+	int bits = fixed_bit_length(magnitude);
+	r.negative = d < 0;
+	r.shift = 14 + bits;
+	r.scale = magnitude ? fixed_udiv((uint64_t)1 << (30 + bits), magnitude) : 0;
+	return r;
+}
+
+FIXED_KERNEL int32_t fixed_times_reciprocal(int32_t x, fixed_reciprocal r)
+{
+	/* x 2^16 / d = x scale / 2^shift, rounded half away from zero. */
+	uint32_t magnitude = x < 0 ? 0u - (uint32_t)x : (uint32_t)x;
+	uint64_t q;
+	if (r.scale == 0) /* d = 0: as fixed_div */
+		return x >= 0 ? FIXED_MAX : -FIXED_MAX;
+	q = (fixed_umul64(magnitude, r.scale) + ((uint64_t)1 << (r.shift - 1))) >> r.shift;
+	if (q > (uint64_t)INT32_MAX)
+		q = (uint64_t)INT32_MAX;
+	return (x < 0) != r.negative ? -(int32_t)q : (int32_t)q;
 }
 
 #endif

@@ -98,6 +98,10 @@ typedef int64_t real2; /* Q32.32: squares and products of lengths */
 #define real2_div(w, b) fixed_div2((w), (b))
 #define real2_ratio(a, b) fixed_ratio2((a), (b))
 #define real2_scale(w, a) fixed_scale2((w), (a))
+/* Dividing several numbers by one: a reciprocal, then a product each. */
+typedef fixed_reciprocal real_reciprocal;
+#define real_reciprocal_of(d) fixed_reciprocal_of(d)
+#define real_times_reciprocal(x, r) fixed_times_reciprocal((x), (r))
 /* How far b^2 - w can be off through rounding, for b a rounded dot product (half an LSB:
  * b^2 off by |b| in Q32.32) and w a real2 scaled by a near-one factor (real2_scale
  * truncates: off by |w| / 2^16), with room to spare: errors here are absolute. */
@@ -177,6 +181,11 @@ static inline real real_ldexp_(real x, int e)
 #define real2_div(w, b) ((w) / (b))
 #define real2_ratio(a, b) ((a) / (b))
 #define real2_scale(w, a) ((w) * (a))
+/* Dividing several numbers by one: floating point keeps the divisor and divides each
+ * (exactly rounded; a reciprocal would round twice). */
+typedef real real_reciprocal;
+#define real_reciprocal_of(d) (d)
+#define real_times_reciprocal(x, r) real_div((x), (r))
 /* How far b^2 - w can be off through rounding: relative errors, bounded generously. */
 #define real2_error_bound(b, w) ((real_mul2((b), (b)) + real_fabs(w)) * REAL_OFFSET)
 #endif

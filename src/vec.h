@@ -99,11 +99,13 @@ VEC_FUNCTION real2 vec_dot2(vec3 a, vec3 b)
 
 VEC_FUNCTION real vec_length(vec3 a) { return real2_sqrt(vec_dot2(a, a)); }
 
-/* a / s, component by component: a reciprocal of a large s would keep few bits in
- * fixed point (1/2560 is 26 LSB in Q16.16, off by 1.6%). */
+/* a / s: one reciprocal for the three components (fixed point keeps 31 bits of it, not
+ * Q16.16's 16: 1/2560 would be 26 LSB, off by 1.6%), so one division, not three. */
 VEC_FUNCTION vec3 vec_div(vec3 a, real s)
 {
-	return vec_make(real_div(a.x, s), real_div(a.y, s), real_div(a.z, s));
+	real_reciprocal r = real_reciprocal_of(s);
+	return vec_make(real_times_reciprocal(a.x, r), real_times_reciprocal(a.y, r),
+			real_times_reciprocal(a.z, r));
 }
 
 /* Unit vector along a; the zero vector stays zero (callers reject it first). */

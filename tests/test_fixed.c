@@ -151,7 +151,7 @@ static void test_narrow_kernels(void)
 			checked++;
 			if (fixed_wide_mul_narrow(a, b) != (int64_t)a * b)
 				mismatches++;
-			if (fixed_umul64((uint32_t)a, (uint32_t)b) != (uint64_t)(uint32_t)a * (uint32_t)b)
+			if (fixed_umul64_narrow((uint32_t)a, (uint32_t)b) != (uint64_t)(uint32_t)a * (uint32_t)b)
 				mismatches++;
 			if (fixed_udiv_narrow(n, d) != (q > UINT32_MAX ? UINT32_MAX : (uint32_t)q))
 				mismatches++;
@@ -160,6 +160,11 @@ static void test_narrow_kernels(void)
 				mismatches++;
 			/* And the kernels built on them, against their 64-bit definitions. */
 			if (fixed_mul(a, b) != fixed_saturate(((int64_t)a * b + 0x8000) >> 16))
+				mismatches++;
+			/* One reciprocal for many divisions: within an LSB of dividing (two past 2^30). */
+			if (b != 0 && fixed_div(a, b) != FIXED_MAX && fixed_div(a, b) != -FIXED_MAX &&
+			    fixed_abs(fixed_times_reciprocal(a, fixed_reciprocal_of(b)) - fixed_div(a, b)) >
+				    1 + (fixed_abs(fixed_div(a, b)) >> 30))
 				mismatches++;
 			/* Division rounds to nearest, halves away from zero. */
 			if (b != 0 && fixed_div(a, b) != fixed_saturate(reference_round_div(a, b)))
