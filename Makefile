@@ -157,10 +157,10 @@ MCU_SRC = $(filter-out $(MCU_HOST_ONLY),$(SRC)) $(filter-out $(MCU_LIBC),$(wildc
 MCU_CAPACITIES = -DRT_MAX_OBJECTS=24 -DRT_MAX_LIGHTS=4 -DRT_MAX_MATERIALS=8 \
 	-DRT_MAX_VERTICES=32 -DRT_MAX_POLY_VERTS=16 -DRT_MAX_PLANES=40 -DRT_MAX_HEDRON_PLANES=12 \
 	-DRT_MAX_WIDTH=160 -DRT_MAX_HEIGHT=160 -DRT_MAX_SCENE_WIDTH=8192 -DRT_MAX_SCENE_HEIGHT=8192 \
-	-DRT_MAX_MEDIA=4 -DRT_CORNER_SAMPLING=0 -DRT_SHAPE_CONE=0
+	-DRT_MAX_MEDIA=4 -DRT_CORNER_SAMPLING=0 -DRT_SHAPE_CONE=0 -DRT_PREVIEW_COLOR=0
 MCU_DEFINES = -DRT_REAL_FIXED -DRT_USE_BVH=0 $(MCU_CAPACITIES)
 # -fsigned-char: plain char as on the x86-64 host, so both builds read bytes alike.
-MCU_CFLAGS = $(WARN) -Os -mthumb -mfloat-abi=soft -ffreestanding -fsigned-char \
+MCU_CFLAGS = $(WARN) -Os -fno-jump-tables -mthumb -mfloat-abi=soft -ffreestanding -fsigned-char \
 	-ffunction-sections -fdata-sections -Isrc -Isrc/mcu $(MCU_DEFINES)
 # The whole program is optimised as one unit (-flto, one partition): 23% less flash than
 # file by file. Its stack use per function and call graph land in build/mcu/CPU/ for
@@ -172,7 +172,7 @@ MCU_CPU_m3 = cortex-m3
 MCU_BOARD_m0 = microbit
 MCU_BOARD_m3 = mps2-an385
 
-build/mcu/%/libc.o: $(MCU_LIBC)
+build/mcu/m0/libc.o build/mcu/m3/libc.o: build/mcu/%/libc.o: $(MCU_LIBC)
 	@mkdir -p $(@D)
 	$(MCU_CC) $(MCU_CFLAGS) -mcpu=$(MCU_CPU_$*) -c -o $@ $(MCU_LIBC)
 .SECONDEXPANSION:

@@ -22,6 +22,7 @@ int camera_init(camera *c, const view *v, int width, int height)
 	c->half_width = real_tan(real_mul(real_mul(v->angle, REAL_C(0.5)), DEGREES_TO_RADIANS));
 	c->width = width;
 	c->height = height;
+	c->per_width = real_reciprocal_of(real_from_int(width));
 	return 1;
 }
 
@@ -29,10 +30,13 @@ ray camera_ray(const camera *c, real x, real y)
 {
 	/* Image-plane offsets at unit distance, as fractions of the half width; y grows
 	 * downwards in the image. (Multiplying x by a rounded pixel size would carry its
-	 * rounding across the row: in Q16.16 several pixels at the far edge.) */
+	 * rounding across the row: in Q16.16 several pixels at the far edge. The reciprocal
+	 * of the width keeps 31 bits in fixed point, and is the division in floating point.) */
 	real width = real_from_int(c->width);
-	real u = real_mul(real_div(real_mul(REAL_C(2.0), x) - width, width), c->half_width);
-	real v = real_mul(real_div(real_from_int(c->height) - real_mul(REAL_C(2.0), y), width),
+	real u = real_mul(real_times_reciprocal(real_mul(REAL_C(2.0), x) - width, c->per_width),
+			  c->half_width);
+	real v = real_mul(real_times_reciprocal(real_from_int(c->height) - real_mul(REAL_C(2.0), y),
+						c->per_width),
 			  c->half_width);
 	ray r;
 	r.origin = c->eye;

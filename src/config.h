@@ -60,6 +60,11 @@
 #define RT_SHAPE_CONE 1
 #endif
 
+/* The ANSI colour previews; 0 leaves them out (ASCII only) where flash is short. */
+#ifndef RT_PREVIEW_COLOR
+#define RT_PREVIEW_COLOR 1
+#endif
+
 #ifndef RT_CORNER_SAMPLING
 #define RT_CORNER_SAMPLING 1 /* --spd's corner rays (a second row buffer); 0 leaves them out */
 #endif

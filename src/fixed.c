@@ -10,41 +10,55 @@
  * only the fixed build's `real` uses it. */
 #include <stdio.h>
 
+/* floor(sqrt(x)) and the remainder x - root^2, digit by digit in 32-bit arithmetic. */
+static uint32_t isqrt_remainder32(uint32_t x, uint32_t *remainder)
+{
+	uint32_t r = 0, bit;
+	if (x == 0) {
+		*remainder = 0;
+		return 0;
+	}
+	/* The highest power of 4 not above x, from its bit length (no search loop). */
+	bit = (uint32_t)1 << ((fixed_bit_length(x) - 1) & ~1);
+	while (bit) {
+		if (x >= r + bit) {
+			x -= r + bit;
+			r = (r >> 1) + bit;
+		} else {
+			r >>= 1;
+		}
+		bit >>= 2;
+	}
+	*remainder = x;
+	return r;
+}
+
 uint64_t fixed_isqrt64(uint64_t x)
 {
-	uint64_t r = 0, bit;
-	if (x == 0)
-		return 0;
-	/* The highest power of 4 not above x, from its bit length (no search loop). */
-	bit = (uint64_t)1 << ((fixed_bit_length(x) - 1) & ~1);
-	/* Digit by digit: r becomes floor(sqrt(x)) and x the remainder x - r^2. While r and
-	 * bit fit 32 bits (x below 2^32), 32-bit arithmetic does: cheaper on small cores. */
+	uint32_t low = (uint32_t)x, root, rem32;
+	uint64_t rem;
+	int i;
 	if (!(x >> 32)) {
-		uint32_t x32 = (uint32_t)x, r32 = 0, bit32 = (uint32_t)bit;
-		while (bit32) {
-			if (x32 >= r32 + bit32) {
-				x32 -= r32 + bit32;
-				r32 = (r32 >> 1) + bit32;
-			} else {
-				r32 >>= 1;
-			}
-			bit32 >>= 2;
-		}
-		x = x32;
-		r = r32;
-	} else {
-		while (bit) {
-			if (x >= r + bit) {
-				x -= r + bit;
-				r = (r >> 1) + bit;
-			} else {
-				r >>= 1;
-			}
-			bit >>= 2;
+		root = isqrt_remainder32(low, &rem32);
+		/* Round: sqrt(n) >= r + 1/2 exactly when n - r^2 > r (numerics.md Q03). */
+		return rem32 > root ? (uint64_t)root + 1 : root;
+	}
+	/* The root of the high word first (32-bit arithmetic, cheap on small cores), then
+	 * one more root bit per two bits of the low word: trying root bit 1 adds
+	 * (2 root + 1)^2 - (2 root)^2 = 4 root + 1 to the square. */
+	root = isqrt_remainder32((uint32_t)(x >> 32), &rem32);
+	rem = rem32;
+	for (i = 0; i < 16; i++) {
+		uint64_t trial = ((uint64_t)root << 2) | 1u;
+		rem = (rem << 2) | (low >> 30);
+		low <<= 2;
+		root <<= 1;
+		if (rem >= trial) {
+			rem -= trial;
+			root |= 1u;
 		}
 	}
-	/* Round: sqrt(n) >= r + 1/2 exactly when n - r^2 > r (numerics.md Q03). */
-	return x > r ? r + 1 : r;
+	return rem > root ? (uint64_t)root + 1 : root;
 }
 
 int32_t fixed_sqrt(int32_t a)

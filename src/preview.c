@@ -107,7 +107,7 @@ static int emit_line(preview_sink *p, const unsigned char *upper, const unsigned
 	for (x = 0; x < p->width; x++) {
 		const unsigned char *u = upper + 3 * x, *l = lower + 3 * x;
 		send(&c, 0);
-		if (p->mode == PREVIEW_ASCII) {
+		if (!RT_PREVIEW_COLOR || p->mode == PREVIEW_ASCII) {
 			int lightness = (luma(u) + luma(l)) / 2;
 			c.text[c.n++] = preview_ramp[lightness * RAMP_LENGTH / 256];
 			continue;
@@ -123,7 +123,7 @@ static int emit_line(preview_sink *p, const unsigned char *upper, const unsigned
 		c.text[c.n++] = (char)0x80;
 	}
 	send(&c, 0);
-	if (p->mode != PREVIEW_ASCII)
+	if (RT_PREVIEW_COLOR && p->mode != PREVIEW_ASCII)
 		c.n += sprintf(c.text + c.n, "\033[0m");
 	c.text[c.n++] = '\n';
 	send(&c, 1);
@@ -168,7 +168,7 @@ static int preview_end(sink *self)
 void preview_sink_init(preview_sink *p, enum preview_mode mode, write_fn write, void *ctx)
 {
 	sink_init(&p->base, preview_begin, preview_row, preview_end, write, ctx);
-	p->mode = mode;
+	p->mode = RT_PREVIEW_COLOR ? mode : PREVIEW_ASCII;
 	p->width = 0;
 	p->have_upper = 0;
 }

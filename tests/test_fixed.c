@@ -10,6 +10,16 @@
 
 static double to_double(int32_t x) { return x / 65536.0; }
 
+/* A small seeded generator (xorshift32): the same numbers on every machine. */
+static uint32_t next_random(uint32_t *state)
+{
+	uint32_t x = *state;
+	x ^= x << 13;
+	x ^= x >> 17;
+	x ^= x << 5;
+	return *state = x;
+}
+
 static void test_products(void)
 {
 	/* Q01: 181^2 fits Q16.16, 182^2 does not; the 64-bit square (real2) holds both. */
@@ -43,6 +53,24 @@ static void test_roots(void)
 	CHECK_INT(fixed_sqrt(-5), 0);
 	CHECK(fixed_isqrt64((uint64_t)1 << 62) == (uint64_t)1 << 31);
 	CHECK(fixed_isqrt64(24) == 5); /* 4.899 rounds up */
+	CHECK(fixed_isqrt64(UINT64_MAX) == (uint64_t)1 << 32);
+	CHECK(fixed_isqrt64(((uint64_t)1 << 32) + 1) == (uint64_t)1 << 16);
+	CHECK(fixed_isqrt64((uint64_t)4294967295u * 4294967295u) == 4294967295u);
+	{
+		/* Against the exact rule, on seeded random numbers of every size: r is the
+		 * rounded root when (r - 1/2)^2 <= x < (r + 1/2)^2, i.e. r^2 - r < x <= r^2 + r. */
+		uint32_t state = 99u;
+		int i, wrong = 0;
+		for (i = 0; i < 20000; i++) {
+			uint64_t x = ((uint64_t)next_random(&state) << 32 | next_random(&state)) >>
+				     (next_random(&state) % 64u);
+			uint64_t r = fixed_isqrt64(x);
+			/* r^2 - r < x <= r^2 + r, in 64 bits: r <= 2^32 so r^2 - r fits. */
+			if (r > 0 && !(r * r - r < x && (x - (r * r - r)) <= 2 * r))
+				wrong++;
+		}
+		CHECK_INT(wrong, 0);
+	}
 	CHECK_INT(fixed_sqrt2((int64_t)9 << 32), Q(3.0));
 	/* Q04: (1,1,1)/sqrt 3 has 37837 LSB per component. */
 	third = fixed_div(Q(1.0), fixed_sqrt(Q(3.0)));
@@ -103,16 +131,6 @@ static void test_parsing(void)
 	/* Scaling a scene: the extent ends up in 2048 .. 4096. */
 	CHECK_INT(fixed_length_shift(Q(12.0), 0), 8);
 	CHECK_INT(fixed_length_shift(Q(100.0), -12), -7);
-}
-
-/* A small seeded generator (xorshift32): the same numbers on every machine. */
-static uint32_t next_random(uint32_t *state)
-{
-	uint32_t x = *state;
-	x ^= x << 13;
-	x ^= x >> 17;
-	x ^= x << 5;
-	return *state = x;
 }
 
 /* Operands worth checking: the edges of the range, and random numbers of every size. */
