@@ -172,7 +172,7 @@ MCU_CPU_m3 = cortex-m3
 MCU_BOARD_m0 = microbit
 MCU_BOARD_m3 = mps2-an385
 
-build/mcu/m0/libc.o build/mcu/m3/libc.o: build/mcu/%/libc.o: $(MCU_LIBC)
+build/mcu/m0/libc.o build/mcu/m3/libc.o: build/mcu/%/libc.o: $(MCU_LIBC) | mcu-tools
 	@mkdir -p $(@D)
 	$(MCU_CC) $(MCU_CFLAGS) -mcpu=$(MCU_CPU_$*) -c -o $@ $(MCU_LIBC)
 .SECONDEXPANSION:
@@ -194,6 +194,10 @@ build/mcu/insncount.so: tools/mcu/insncount.c
 # qemu-system-arm is installed from Debian's packages when missing.
 mcu-ready: mcu build/rt-fixed
 	@command -v qemu-system-arm >/dev/null || { apt-get update && apt-get install -y qemu-system-arm; }
+# The cross compiler and the C headers it needs, likewise.
+mcu-tools:
+	@command -v $(MCU_CC) >/dev/null || { apt-get update && \
+		apt-get install -y gcc-arm-none-eabi libnewlib-arm-none-eabi; }
 test-mcu: mcu-ready
 	@sh tests/mcu.sh
 
@@ -211,6 +215,6 @@ uninstall:
 clean:
 	rm -rf build rt
 
-.PHONY: all mcu mcu-ready test-mcu test install uninstall clean fuzz fuzz-merge variants algorithms check-clang lint
+.PHONY: all mcu mcu-ready mcu-tools test-mcu test install uninstall clean fuzz fuzz-merge variants algorithms check-clang lint
 
 -include $(OBJ:.o=.d) $(TEST_OBJ:.o=.d)
