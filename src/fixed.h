@@ -135,11 +135,14 @@ static inline uint32_t fixed_udiv_narrow(uint64_t n, uint32_t d)
 	return q;
 }
 
-/* floor(n / d) for d > 0, 64 bits by 64: one quotient bit per step, from the top one. */
+/* floor(n / d), 64 bits by 64 (UINT64_MAX for d = 0): one quotient bit per step, from
+ * the top one. */
 static inline uint64_t fixed_udiv64_narrow(uint64_t n, uint64_t d)
 {
 	int shift = fixed_bit_length(n) - fixed_bit_length(d), i;
 	uint64_t q = 0;
+	if (d == 0)
+		return UINT64_MAX; /* as if infinite: callers never divide by 0 */
 	if (shift < 0)
 		return 0;
 	d <<= shift; /* fits: it has as many bits as n now */
@@ -166,7 +169,7 @@ static inline uint64_t fixed_udiv64_narrow(uint64_t n, uint64_t d)
 #endif
 FIXED_KERNEL int64_t fixed_wide_mul(int32_t a, int32_t b);     /* a b, exactly */
 FIXED_KERNEL uint32_t fixed_udiv(uint64_t n, uint32_t d);      /* n / d, or UINT32_MAX */
-FIXED_KERNEL uint64_t fixed_udiv64(uint64_t n, uint64_t d);    /* n / d */
+FIXED_KERNEL uint64_t fixed_udiv64(uint64_t n, uint64_t d);    /* n / d; UINT64_MAX if d = 0 */
 FIXED_KERNEL int64_t fixed_div64(int64_t n, int64_t d);        /* n / d, truncated */
 FIXED_KERNEL int64_t fixed_round_div(int64_t n, int64_t d);    /* n / d, rounded */
 FIXED_KERNEL int32_t fixed_round_div_sat(int64_t n, int32_t d); /* rounded, saturated */
@@ -215,7 +218,7 @@ FIXED_KERNEL uint64_t fixed_udiv64(uint64_t n, uint64_t d)
 #if FIXED_NARROW
 	return fixed_udiv64_narrow(n, d);
 #else
-	return n / d;
+	return d ? n / d : UINT64_MAX;
 #endif
 }
 

@@ -922,7 +922,7 @@ static int source_pass(scene *s, const char *name, const scene_source *source, i
 
 /* Loads a scene from a re-readable source: once in floating point; in fixed point first
  * to measure it, then at the scale that fits it, then checks it can be held. */
-int parse_scene_source(scene *s, const char *path, const scene_source *source)
+int parse_scene_source(scene *s, const char *name, const scene_source *source)
 {
 	/* Floating point reads the file once. Fixed point reads it first to measure it (at
 	 * scale 1, which keeps small scenes' detail, or if a length does not fit there at
@@ -935,20 +935,20 @@ int parse_scene_source(scene *s, const char *path, const scene_source *source)
 	 * static analysis reports about a variable ("always false"). */
 	if (REAL_FIRST_PASS_SHIFT != 0) {
 		int shift = 0, ok, was_muted = diag_mute(1);
-		ok = source_pass(s, path, source, shift);
+		ok = source_pass(s, name, source, shift);
 		if (!ok) {
 			shift = REAL_FIRST_PASS_SHIFT;
-			ok = source_pass(s, path, source, shift);
+			ok = source_pass(s, name, source, shift);
 		}
 		diag_mute(was_muted);
 		if (!ok)
-			return source_pass(s, path, source, shift); /* again, to report the error */
+			return source_pass(s, name, source, shift); /* again, to report the error */
 		/* Every length read counts, also those of objects skipped at this scale. */
 		final_shift = real_length_shift(s->longest_length, shift);
 	} else {
 		final_shift = 0;
 	}
-	if (!source_pass(s, path, source, final_shift))
+	if (!source_pass(s, name, source, final_shift))
 		return 0;
 	s->length_shift = final_shift;
 	scene_measure(s, &extent, &feature);
@@ -956,7 +956,7 @@ int parse_scene_source(scene *s, const char *path, const scene_source *source)
 		char e[32], f[32];
 		real_format(extent, final_shift, e, sizeof e);
 		real_format(feature, final_shift, f, sizeof f);
-		diag_error(path, 0, "cannot be rendered in %s: extent %s, smallest feature %s: %s",
+		diag_error(name, 0, "cannot be rendered in %s: extent %s, smallest feature %s: %s",
 			   REAL_NAME, e, f, why);
 		return 0;
 	}

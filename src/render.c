@@ -23,7 +23,7 @@ int render_image(tracer *t, const camera *c, enum render_sampling sampling, int 
 		 sink *out, progress_fn progress, void *progress_ctx)
 {
 	int x, y, top = 0;
-	const vec3 *done = rows[0];
+	const vec3 *done;
 	if (!out->begin(out, c->width, y1 - y0))
 		return 0;
 	if (RT_CORNER_SAMPLING && sampling == SAMPLE_CORNERS)

@@ -40,28 +40,31 @@ static int split_arguments(void)
 	return argc;
 }
 
+/* The linker's symbols bound different objects as far as C knows: compared as
+ * addresses (integers), not as pointers. */
 size_t mcu_stack_used(void)
 {
-	const uint32_t *w = __bss_end__;
-	while (w < __stack && *w == STACK_PAINT)
-		w++;
-	return (size_t)((const char *)__stack - (const char *)w);
+	uintptr_t at = (uintptr_t)__bss_end__, top = (uintptr_t)__stack;
+	while (at < top && *(const uint32_t *)at == STACK_PAINT)
+		at += sizeof(uint32_t);
+	return (size_t)(top - at);
 }
 
 void Reset_Handler(void);
 void Reset_Handler(void)
 {
-	uint32_t *src = __data_load__, *dst = __data_start__;
+	const uint32_t *src = __data_load__;
+	uintptr_t at, end = (uintptr_t)__data_end__, limit;
 	volatile uint32_t here = 0;
-	uint32_t *limit;
-	while (dst < __data_end__)
-		*dst++ = *src++;
-	for (dst = __bss_start__; dst < __bss_end__; dst++)
-		*dst = 0;
-	/* Paint up to just below this frame; main's frames start here. */
-	limit = (uint32_t *)((uintptr_t)&here & ~(uintptr_t)3) - 16;
-	for (dst = __bss_end__; dst < limit; dst++)
-		*dst = STACK_PAINT;
+	for (at = (uintptr_t)__data_start__; at < end; at += sizeof(uint32_t))
+		*(uint32_t *)at = *src++;
+	for (at = (uintptr_t)__bss_start__, end = (uintptr_t)__bss_end__; at < end;
+	     at += sizeof(uint32_t))
+		*(uint32_t *)at = 0;
+	/* Paint up to just below this frame (64 bytes spare); main's frames start here. */
+	limit = ((uintptr_t)&here & ~(uintptr_t)3) - 64;
+	for (at = (uintptr_t)__bss_end__; at < limit; at += sizeof(uint32_t))
+		*(uint32_t *)at = STACK_PAINT;
 	semihost_exit(main(split_arguments(), args));
 }
 
@@ -76,7 +79,7 @@ void Fault_Handler(void)
 }
 
 /* The vector table: the initial stack pointer, then the handlers. A struct, as C forbids
- * storing a data pointer among function pointers. */
+ * storing a data pointer among function pointers. Only the processor reads it. */
 typedef void (*handler)(void);
 __attribute__((section(".vectors"), used)) static const struct {
 	uint32_t *initial_stack;
