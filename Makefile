@@ -178,6 +178,22 @@ MCU_BOARD_m3 = mps2-an385
 build/mcu/m0/libc.o build/mcu/m3/libc.o: build/mcu/%/libc.o: $(MCU_LIBC) | mcu-tools
 	@mkdir -p $(@D)
 	$(MCU_CC) $(MCU_CFLAGS) -mcpu=$(MCU_CPU_$*) -c -o $@ $(MCU_LIBC)
+# A build with a scene compiled in (tools/scene2c), for a board with no host to read
+# files from: `make mcu-builtin SCENE=scenes/X.nff` makes build/mcu/rt-m0-builtin.elf,
+# which renders it when no scene is named.
+SCENE ?= scenes/mcu-demo.nff
+build/mcu/builtin-scene.c: $(SCENE) tools/scene2c FORCE
+	@mkdir -p $(@D)
+	python3 tools/scene2c $(SCENE) $@.new
+	@cmp -s $@.new $@ && rm $@.new || mv $@.new $@
+build/mcu/rt-m0-builtin.elf: $(MCU_SRC) $(wildcard src/*.h src/mcu/*.h) build/mcu/m0/libc.o \
+		build/mcu/builtin-scene.c src/mcu/sections.ld src/mcu/microbit.ld
+	$(MCU_CC) $(MCU_CFLAGS) -mcpu=$(MCU_CPU_m0) -DRT_BUILTIN_SCENE=1 -flto $(filter-out \
+		-fstack-usage -fcallgraph-info=su,$(MCU_LDFLAGS)) -T microbit.ld -o $@ $(MCU_SRC) \
+		build/mcu/builtin-scene.c build/mcu/m0/libc.o -lgcc
+mcu-builtin: build/mcu/rt-m0-builtin.elf
+FORCE:
+
 .SECONDEXPANSION:
 build/mcu/rt-%.elf: $(MCU_SRC) $(wildcard src/*.h src/mcu/*.h) build/mcu/%/libc.o \
 		src/mcu/sections.ld src/mcu/$$(MCU_BOARD_$$*).ld
@@ -195,7 +211,7 @@ build/mcu/insncount.so: tools/mcu/insncount.c
 	$(CC) -O2 -Wall -Wextra -shared -fPIC -o $@ tools/mcu/insncount.c
 
 # qemu-system-arm is installed from Debian's packages when missing.
-mcu-ready: mcu build/rt-fixed
+mcu-ready: mcu mcu-builtin build/rt-fixed
 	@command -v qemu-system-arm >/dev/null || { apt-get update && apt-get install -y qemu-system-arm; }
 # The cross compiler and the C headers it needs, likewise.
 mcu-tools:
@@ -218,6 +234,6 @@ uninstall:
 clean:
 	rm -rf build rt
 
-.PHONY: all mcu mcu-ready mcu-tools test-mcu test install uninstall clean fuzz fuzz-merge variants algorithms check-clang lint
+.PHONY: all mcu mcu-builtin FORCE mcu-ready mcu-tools test-mcu test install uninstall clean fuzz fuzz-merge variants algorithms check-clang lint
 
 -include $(OBJ:.o=.d) $(TEST_OBJ:.o=.d)

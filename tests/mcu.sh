@@ -101,5 +101,17 @@ for cpu in m0 m3; do
 	check "$cpu: a missing file gives status 1" [ $? -eq 1 ]
 	check "$cpu: a missing file is named" grep -q '^rt: no-such-file.nff: cannot open' "$tmp/mcu.err"
 done
+# The build with a scene compiled in (make mcu-builtin: scenes/mcu-demo.nff by default)
+# renders it with no scene named, and a named file still wins.
+if [ -f build/mcu/rt-m0-builtin.elf ]; then
+	name=$(sed -n 's/^const char rt_builtin_scene_name\[\] = "\(.*\)";$/\1/p' build/mcu/builtin-scene.c)
+	run_mcu microbit build/mcu/rt-m0-builtin.elf "$tmp/mcu.out" "$tmp/mcu.err"
+	check "builtin: exit status $?" [ $? -eq 0 ]
+	./build/rt-fixed "$name" >"$tmp/host.out"
+	check "builtin: output differs from build/rt-fixed $name" cmp -s "$tmp/mcu.out" "$tmp/host.out"
+	run_mcu microbit build/mcu/rt-m0-builtin.elf "$tmp/mcu.out" "$tmp/mcu.err" -s 80x60 scenes/mcu-glass.nff
+	./build/rt-fixed -s 80x60 scenes/mcu-glass.nff >"$tmp/host.out"
+	check "builtin: a named scene does not win" cmp -s "$tmp/mcu.out" "$tmp/host.out"
+fi
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "builtin.h"
 #include "camera.h"
 #include "diag.h"
 #include "image.h"
@@ -91,9 +92,23 @@ static int parse_options(int argc, char **argv, options *o)
 			o->scene_path = a;
 		}
 	}
-	if (!o->scene_path)
+	/* With a scene compiled in, a file named on the command line still wins. */
+	if (!o->scene_path && !RT_BUILTIN_SCENE)
 		return usage_error("no scene file given", "");
 	return -1;
+}
+
+/* The scene compiled in, if the build has one (parse_options allows no file then);
+ * *name becomes the file it came from, for messages. */
+static int load_builtin(const char **name)
+{
+#if RT_BUILTIN_SCENE
+	*name = rt_builtin_scene_name;
+	return parse_scene_buffer(&the_scene, *name, rt_builtin_scene, rt_builtin_scene_size);
+#else
+	(void)name;
+	return 0;
+#endif
 }
 
 /* Prints the stack's high-water mark: what the measured run really used. */
@@ -112,7 +127,8 @@ int main(int argc, char **argv)
 	int status = parse_options(argc, argv, &opt), width, height, ok;
 	if (status >= 0)
 		return status;
-	if (!parse_scene_file(&the_scene, opt.scene_path))
+	if (!(opt.scene_path ? parse_scene_file(&the_scene, opt.scene_path)
+			     : load_builtin(&opt.scene_path)))
 		return 1;
 	width = opt.width ? opt.width : the_scene.camera.width;
 	height = opt.height ? opt.height : the_scene.camera.height;
