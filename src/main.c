@@ -41,6 +41,7 @@ static const char usage_text[] =
 	"               a render across processes: see tools/render-parallel)\n"
 	"  --spd        SPD testing procedure: corner rays, depth 5, no weight cutoff\n"
 	"  --stats      print ray counts and timings on standard error\n"
+	"  --size       print the image size the other options give, as 'W H', and exit\n"
 	"  --help       show this help and exit\n"
 	"  --version    show the version and exit\n"
 	"\n"
@@ -61,6 +62,7 @@ typedef struct {
 	int row_first, row_end; /* --rows: [first, end); end 0 for all rows */
 	int spd;
 	int stats;
+	int size_only; /* --size: print the image size and stop */
 } options;
 
 /* Scene storage is large and lives for the whole run. */
@@ -135,6 +137,8 @@ static int parse_options(int argc, char **argv, options *o)
 			return 0;
 		} else if (strcmp(a, "--stats") == 0) {
 			o->stats = 1;
+		} else if (strcmp(a, "--size") == 0) {
+			o->size_only = 1;
 		} else if (strcmp(a, "--spd") == 0) {
 			o->spd = 1;
 		} else if (strcmp(a, "--ids") == 0) {
@@ -258,6 +262,10 @@ int main(int argc, char **argv)
 			opt.format = term_color_mode() == PREVIEW_ASCII ? FORMAT_ASCII : FORMAT_ANSI;
 		preview_size(opt.columns ? opt.columns : term_columns(), width, height, &width,
 			     &height);
+	}
+	if (opt.size_only) {
+		printf("%d %d\n", width, height);
+		return fflush(stdout) == 0 ? 0 : 1;
 	}
 	if (opt.row_end > height) {
 		diag_error(NULL, 0, "--rows %d:%d is outside the image's %d rows", opt.row_first,

@@ -162,6 +162,15 @@ expect_status "--version" 0
 expect_no_stderr "--version"
 if grep -q '^rt [0-9]' "$tmp/out"; then ok; else bad "--version: no 'rt VERSION' on stdout"; fi
 
+# --size: the image size the options give, without rendering.
+run --size scenes/mcu-demo.nff
+expect_status "--size" 0
+if [ "$(cat "$tmp/out")" = "160 100" ]; then ok; else bad "--size: expected '160 100', got '$(cat "$tmp/out")'"; fi
+run -s 33x21 --size scenes/mcu-demo.nff
+if [ "$(cat "$tmp/out")" = "33 21" ]; then ok; else bad "--size -s 33x21: got '$(cat "$tmp/out")'"; fi
+run --ascii --cols 40 --size scenes/mcu-demo.nff
+if [ "$(cat "$tmp/out")" = "40 26" ]; then ok; else bad "--size --ascii --cols 40: got '$(cat "$tmp/out")'"; fi
+
 # usage WHAT ARGS...: exit 2, nothing on stdout, a hint on stderr.
 usage() {
 	what=$1
