@@ -56,6 +56,11 @@ static void test_roots(void)
 	CHECK(fixed_isqrt64(UINT64_MAX) == (uint64_t)1 << 32);
 	CHECK(fixed_isqrt64(((uint64_t)1 << 32) + 1) == (uint64_t)1 << 16);
 	CHECK(fixed_isqrt64((uint64_t)4294967295u * 4294967295u) == 4294967295u);
+	/* Either side of 2^60, where the digit loop leaves 32-bit arithmetic. */
+	CHECK(fixed_isqrt64(((uint64_t)1 << 60) - 1) == (uint64_t)1 << 30);
+	CHECK(fixed_isqrt64((uint64_t)1073741823u * 1073741823u + 1073741823u) == 1073741823u);
+	CHECK(fixed_isqrt64((uint64_t)1 << 60) == (uint64_t)1 << 30);
+	CHECK(fixed_isqrt64(((uint64_t)1 << 60) + ((uint64_t)1 << 31)) == ((uint64_t)1 << 30) + 1);
 	{
 		/* Against the exact rule, on seeded random numbers of every size: r is the
 		 * rounded root when (r - 1/2)^2 <= x < (r + 1/2)^2, i.e. r^2 - r < x <= r^2 + r. */
