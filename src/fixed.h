@@ -300,7 +300,9 @@ FIXED_KERNEL int64_t fixed_scale2(int64_t w, int32_t a)
 	uint64_t product;
 	if (ma == 0 || mh == 0)
 		return 0;
-	if (fixed_bit_length(mh) + fixed_bit_length(ma) > 63)
+	/* The usual factor is near one (a squared unit length): its 17 bits and the 46 of
+	 * |high| cannot pass 2^63, and then no bit lengths are needed. */
+	if ((ma >> 17 || mh >> 46) && fixed_bit_length(mh) + fixed_bit_length(ma) > 63)
 		return (high < 0) != (a < 0) ? -INT64_MAX : INT64_MAX;
 	/* |high| |a| < 2^63 here: split |high| into 32-bit halves, each times |a| exactly. */
 	product = (fixed_umul64((uint32_t)(mh >> 32), ma) << 32) + fixed_umul64((uint32_t)mh, ma);
