@@ -73,6 +73,138 @@ static inline uint64_t fixed_umul64(uint32_t a, uint32_t b)
 #endif
 }
 
+/* The kernels below work on 64-bit values as two 32-bit halves (low, high): on the M0 a
+ * 64-bit value in C costs register shuffles and carry tests the instruction set does in
+ * one step. With GCC there the product and the sum are Thumb-1 assembly, the same steps
+ * as fixed_wide_mul_narrow and a 64-bit add; elsewhere C with the same results, so the
+ * unit tests check the forms built on them on every build. */
+#if FIXED_NARROW && defined(__GNUC__)
+#define FIXED_ASM 1
+/* Inlined into the kernels that use them, whatever -Os thinks: that is their point. */
+#define FIXED_PARTS static inline __attribute__((always_inline))
+#else
+#define FIXED_ASM 0
+#define FIXED_PARTS static inline
+#endif
+
+/* a b as (*high << 32) + *low, exactly. */
+FIXED_PARTS void fixed_wide_mul_parts(int32_t a, int32_t b, uint32_t *low, int32_t *high)
+{
+#if FIXED_ASM
+	uint32_t al, bl, product;
+	/* a and b become their high halves; the four products, then each cross product
+	 * added at bit 16 with its carry. GCC hands Thumb-1 inline assembly to the
+	 * assembler in the old divided syntax: these lines are in unified syntax. */
+	__asm__(".syntax unified\n\t"
+		"uxth %[al], %[a]\n\t"
+		"uxth %[bl], %[b]\n\t"
+		"asrs %[a], %[a], #16\n\t"
+		"asrs %[b], %[b], #16\n\t"
+		"movs %[p], %[al]\n\t"
+		"muls %[p], %[bl]\n\t" /* al bl */
+		"muls %[al], %[b]\n\t" /* al bh */
+		"muls %[bl], %[a]\n\t" /* ah bl */
+		"muls %[b], %[a]\n\t"  /* ah bh */
+		"lsls %[a], %[al], #16\n\t"
+		"asrs %[al], %[al], #16\n\t"
+		"adds %[p], %[a]\n\t"
+		"adcs %[b], %[al]\n\t"
+		"lsls %[a], %[bl], #16\n\t"
+		"asrs %[bl], %[bl], #16\n\t"
+		"adds %[p], %[a]\n\t"
+		"adcs %[b], %[bl]"
+		: [a] "+l"(a), [b] "+l"(b), [al] "=&l"(al), [bl] "=&l"(bl), [p] "=&l"(product)
+		:
+		: "cc");
+	*low = product;
+	*high = b;
+#else
+	int64_t product = fixed_wide_mul_narrow(a, b);
+	*low = (uint32_t)product;
+	*high = (int32_t)(product >> 32);
+#endif
+}
+
+/* (*high, *low) += (high, low), wrapping as 64-bit two's complement. */
+FIXED_PARTS void fixed_add_parts(uint32_t *low, int32_t *high, uint32_t add_low,
+				   int32_t add_high)
+{
+#if FIXED_ASM
+	uint32_t l = *low;
+	int32_t h = *high;
+	__asm__(".syntax unified\n\t"
+		"adds %[l], %[al]\n\t"
+		"adcs %[h], %[ah]"
+		: [l] "+l"(l), [h] "+l"(h)
+		: [al] "l"(add_low), [ah] "l"(add_high)
+		: "cc");
+	*low = l;
+	*high = h;
+#else
+	uint32_t sum = *low + add_low;
+	*high = (int32_t)((uint32_t)*high + (uint32_t)add_high + (sum < add_low));
+	*low = sum;
+#endif
+}
+
+FIXED_PARTS int64_t fixed_join_parts(uint32_t low, int32_t high)
+{
+	return (int64_t)(((uint64_t)(uint32_t)high << 32) | low);
+}
+
+/* fixed_saturate(((high << 32) + low + 2^15) >> 16): a Q32.32 value rounded to Q16.16,
+ * in 32-bit steps. */
+FIXED_PARTS int32_t fixed_round_parts(uint32_t low, int32_t high)
+{
+	int32_t v;
+	fixed_add_parts(&low, &high, 0x8000u, 0);
+	if (high >= 0x8000)
+		return INT32_MAX;
+	if (high < -0x8000)
+		return -INT32_MAX;
+	v = high * 65536 + (int32_t)(low >> 16);
+	return v == INT32_MIN ? -INT32_MAX : v;
+}
+
+/* fixed_mul, fixed_dot3 and the dot product as 64 bits, from the parts. */
+FIXED_PARTS int32_t fixed_mul_narrow(int32_t a, int32_t b)
+{
+	uint32_t low;
+	int32_t high;
+	fixed_wide_mul_parts(a, b, &low, &high);
+	return fixed_round_parts(low, high);
+}
+
+FIXED_PARTS void fixed_dot3_parts(int32_t ax, int32_t ay, int32_t az, int32_t bx,
+				    int32_t by, int32_t bz, uint32_t *low, int32_t *high)
+{
+	uint32_t l;
+	int32_t h;
+	fixed_wide_mul_parts(ax, bx, low, high);
+	fixed_wide_mul_parts(ay, by, &l, &h);
+	fixed_add_parts(low, high, l, h);
+	fixed_wide_mul_parts(az, bz, &l, &h);
+	fixed_add_parts(low, high, l, h);
+}
+
+FIXED_PARTS int32_t fixed_dot3_narrow(int32_t ax, int32_t ay, int32_t az, int32_t bx,
+					int32_t by, int32_t bz)
+{
+	uint32_t low;
+	int32_t high;
+	fixed_dot3_parts(ax, ay, az, bx, by, bz, &low, &high);
+	return fixed_round_parts(low, high);
+}
+
+FIXED_PARTS int64_t fixed_dot3_wide_narrow(int32_t ax, int32_t ay, int32_t az, int32_t bx,
+					     int32_t by, int32_t bz)
+{
+	uint32_t low;
+	int32_t high;
+	fixed_dot3_parts(ax, ay, az, bx, by, bz, &low, &high);
+	return fixed_join_parts(low, high);
+}
+
 /* Number of significant bits of x (0 for 0), by halving: a few steps, no loop. */
 static inline int fixed_bit_length(uint64_t x)
 {
@@ -173,6 +305,8 @@ FIXED_KERNEL int32_t fixed_round_div_sat(int64_t n, int32_t d); /* rounded, satu
 FIXED_KERNEL int32_t fixed_mul(int32_t a, int32_t b);
 FIXED_KERNEL int32_t fixed_dot3(int32_t ax, int32_t ay, int32_t az, int32_t bx, int32_t by,
 				int32_t bz);
+FIXED_KERNEL int64_t fixed_dot3_wide(int32_t ax, int32_t ay, int32_t az, int32_t bx,
+				     int32_t by, int32_t bz); /* as 64 bits, exactly */
 FIXED_KERNEL int32_t fixed_div(int32_t a, int32_t b);
 FIXED_KERNEL int32_t fixed_abs(int32_t a);
 FIXED_KERNEL int32_t fixed_from_int(long i);
@@ -194,7 +328,10 @@ FIXED_KERNEL int32_t fixed_times_reciprocal(int32_t x, fixed_reciprocal r); /* x
 FIXED_KERNEL int64_t fixed_wide_mul(int32_t a, int32_t b)
 {
 #if FIXED_NARROW
-	return fixed_wide_mul_narrow(a, b);
+	uint32_t low;
+	int32_t high;
+	fixed_wide_mul_parts(a, b, &low, &high);
+	return fixed_join_parts(low, high);
 #else
 	return (int64_t)a * b;
 #endif
@@ -253,16 +390,33 @@ FIXED_KERNEL int32_t fixed_round_div_sat(int64_t n, int32_t d)
 
 FIXED_KERNEL int32_t fixed_mul(int32_t a, int32_t b)
 {
-	return fixed_saturate((fixed_wide_mul(a, b) + 0x8000) >> 16);
+#if FIXED_NARROW
+	return fixed_mul_narrow(a, b);
+#else
+	return fixed_saturate(((int64_t)a * b + 0x8000) >> 16);
+#endif
 }
 
 /* A dot product summed in 64 bits and rounded once. */
 FIXED_KERNEL int32_t fixed_dot3(int32_t ax, int32_t ay, int32_t az, int32_t bx, int32_t by,
 				 int32_t bz)
 {
-	return fixed_saturate(
-		(fixed_wide_mul(ax, bx) + fixed_wide_mul(ay, by) + fixed_wide_mul(az, bz) + 0x8000) >>
-		16);
+#if FIXED_NARROW
+	return fixed_dot3_narrow(ax, ay, az, bx, by, bz);
+#else
+	return fixed_saturate(((int64_t)ax * bx + (int64_t)ay * by + (int64_t)az * bz + 0x8000) >>
+			      16);
+#endif
+}
+
+FIXED_KERNEL int64_t fixed_dot3_wide(int32_t ax, int32_t ay, int32_t az, int32_t bx,
+				     int32_t by, int32_t bz)
+{
+#if FIXED_NARROW
+	return fixed_dot3_wide_narrow(ax, ay, az, bx, by, bz);
+#else
+	return (int64_t)ax * bx + (int64_t)ay * by + (int64_t)az * bz;
+#endif
 }
 
 FIXED_KERNEL int32_t fixed_div(int32_t a, int32_t b)

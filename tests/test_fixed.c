@@ -182,7 +182,15 @@ static void test_narrow_kernels(void)
 			    fixed_udiv64_narrow(n, n / 3 + 1) != n / (n / 3 + 1))
 				mismatches++;
 			/* And the kernels built on them, against their 64-bit definitions. */
-			if (fixed_mul(a, b) != fixed_saturate(((int64_t)a * b + 0x8000) >> 16))
+			if (fixed_mul(a, b) != fixed_saturate(((int64_t)a * b + 0x8000) >> 16) ||
+			    fixed_mul_narrow(a, b) != fixed_mul(a, b))
+				mismatches++;
+			/* Halved, so that three products sum within 63 bits. */
+			if (fixed_dot3_narrow(a >> 1, b, (a ^ b) >> 1, b >> 1, a, b >> 3) !=
+				    fixed_dot3(a >> 1, b, (a ^ b) >> 1, b >> 1, a, b >> 3) ||
+			    fixed_dot3_wide_narrow(a >> 1, -(b >> 1), b, b, a >> 1, a >> 5) !=
+				    (int64_t)(a >> 1) * b - (int64_t)(b >> 1) * (a >> 1) +
+					    (int64_t)b * (a >> 5))
 				mismatches++;
 			/* One reciprocal for many divisions: within an LSB of dividing (two past 2^30). */
 			if (b != 0 && fixed_div(a, b) != FIXED_MAX && fixed_div(a, b) != -FIXED_MAX &&
@@ -202,6 +210,15 @@ static void test_narrow_kernels(void)
 	CHECK(fixed_udiv_narrow(UINT64_MAX, UINT32_MAX) == UINT32_MAX);
 	CHECK(fixed_udiv_narrow(UINT64_MAX - 1, UINT32_MAX) == UINT32_MAX);
 	CHECK(fixed_udiv_narrow(7, 2) == 3);
+	/* Rounding a Q32.32 sum to Q16.16 saturates at +-INT32_MAX, never INT32_MIN. */
+	CHECK_INT(fixed_dot3_narrow(INT32_MIN, 0, 0, 65536, 0, 0), -INT32_MAX);
+	CHECK_INT(fixed_dot3_narrow(INT32_MIN + 1, 0, 0, 65536, 0, 0), -INT32_MAX);
+	CHECK_INT(fixed_dot3_narrow(INT32_MAX, 0, 0, 65536, 0, 0), INT32_MAX);
+	CHECK_INT(fixed_mul_narrow(-65536, 65535), -65535);
+	CHECK_INT(fixed_mul_narrow(-1, 32768), 0);  /* -0.5 LSB rounds towards +infinity */
+	CHECK_INT(fixed_mul_narrow(-1, 32769), -1);
+	CHECK_INT(fixed_mul_narrow(INT32_MAX, INT32_MAX), INT32_MAX);
+	CHECK_INT(fixed_mul_narrow(INT32_MAX, -INT32_MAX), -INT32_MAX);
 	CHECK_INT(fixed_div(Q(1.0), -Q(3.0)), -21845);
 	CHECK_INT(fixed_div(3, 2 * 65536), 2); /* 1.5 LSB rounds away from zero */
 	CHECK_INT(fixed_div(-3, 2 * 65536), -2);
