@@ -18,6 +18,14 @@ static inline int32_t fixed_saturate(int64_t v)
 	return v > INT32_MAX ? INT32_MAX : v < -INT32_MAX ? -INT32_MAX : (int32_t)v;
 }
 
+/* fixed_saturate((int64_t)a + b) in 32-bit arithmetic: the overflow test first. */
+static inline int32_t fixed_add(int32_t a, int32_t b)
+{
+	if (b > 0 ? a > INT32_MAX - b : a < -INT32_MAX - b)
+		return b > 0 ? INT32_MAX : -INT32_MAX;
+	return a + b;
+}
+
 /* A Cortex-M0 (ARMv6-M) multiplies only 32 x 32 -> 32 bits and cannot divide: there a
  * 64-bit product is a call to a general 64 x 64 routine (~40 instructions) and a 64-bit
  * quotient one to a general 64 / 64 routine (~500). The narrow forms below build the

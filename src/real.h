@@ -81,7 +81,7 @@ typedef int64_t real2; /* Q32.32: squares and products of lengths */
 #define REAL_C(x) ((real)((x) * 65536.0 + ((x) < 0 ? -0.5 : 0.5)))
 #define REAL_MAX ((real)0x7FFFFFFF)
 #define real_mul(a, b) fixed_mul((a), (b))
-#define real_add(a, b) fixed_saturate((int64_t)(a) + (b))
+#define real_add(a, b) fixed_add((a), (b))
 #define real_dot3(ax, ay, az, bx, by, bz) fixed_dot3((ax), (ay), (az), (bx), (by), (bz))
 #define real_div(a, b) fixed_div((a), (b))
 #define real_sqrt(a) fixed_sqrt(a)

@@ -181,6 +181,8 @@ static void test_narrow_kernels(void)
 			if (fixed_udiv64_narrow(n * 977, d) != n * 977 / d ||
 			    fixed_udiv64_narrow(n, n / 3 + 1) != n / (n / 3 + 1))
 				mismatches++;
+			if (fixed_add(a, b) != fixed_saturate((int64_t)a + b))
+				mismatches++;
 			/* And the kernels built on them, against their 64-bit definitions. */
 			if (fixed_mul(a, b) != fixed_saturate(((int64_t)a * b + 0x8000) >> 16) ||
 			    fixed_mul_narrow(a, b) != fixed_mul(a, b))
