@@ -246,33 +246,52 @@ static inline int fixed_bit_length(uint64_t x)
 }
 
 /* floor(n / d) for d > 0, or UINT32_MAX when the quotient does not fit 32 bits: one
- * quotient bit per step, from a remainder that always stays below d. */
+ * quotient bit per step, from a remainder that always stays below d. The low word of n
+ * is shifted out at the top as the quotient bits are shifted in at the bottom. */
 static inline uint32_t fixed_udiv_narrow(uint64_t n, uint32_t d)
 {
-	/* The quotient has at most `bits` bits: start with the remainder n >> bits (< d) and
-	 * bring down one bit of n per step, skipping the quotient's leading zeros. */
-	int bits = fixed_bit_length(n) - fixed_bit_length(d) + 1, i;
-	uint32_t rem, low, q = 0;
-	if (bits <= 0)
-		return 0;
-	if ((uint32_t)(n >> 32) >= d)
+	uint32_t rem = (uint32_t)(n >> 32), low = (uint32_t)n;
+	int steps = 32;
+	if (rem >= d)
 		return UINT32_MAX; /* the quotient needs more than 32 bits */
-	if (bits > 32)
-		bits = 32;
-	rem = (uint32_t)(n >> bits);
-	low = bits == 32 ? (uint32_t)n : (uint32_t)n << (32 - bits);
-	for (i = 0; i < bits; i++) {
+	if (!(rem >> 16) && ((rem << 16) | (low >> 16)) < d) {
+		/* At most 16 quotient bits (a result below 1.0): start 16 bits further on. */
+		rem = (rem << 16) | (low >> 16);
+		low <<= 16;
+		steps = 16;
+	}
+#if FIXED_ASM
+	/* (rem, low) shifts left as one 64-bit number; a carry out of rem means the
+	 * remainder passed 2^32 > d. */
+	__asm__(".syntax unified\n"
+		"1:\n\t"
+		"adds %[low], %[low]\n\t"
+		"adcs %[rem], %[rem]\n\t"
+		"bcs 2f\n\t"
+		"cmp %[rem], %[d]\n\t"
+		"bcc 3f\n"
+		"2:\n\t"
+		"subs %[rem], %[d]\n\t"
+		"adds %[low], #1\n"
+		"3:\n\t"
+		"subs %[steps], #1\n\t"
+		"bne 1b"
+		: [low] "+l"(low), [rem] "+l"(rem), [steps] "+l"(steps)
+		: [d] "l"(d)
+		: "cc");
+#else
+	for (; steps > 0; steps--) {
 		/* rem < d, so 2 rem + 1 < 2^33: the bit shifted out is the 33rd. */
 		uint32_t carry = rem >> 31;
 		rem = (rem << 1) | (low >> 31);
 		low <<= 1;
-		q <<= 1;
 		if (carry || rem >= d) {
 			rem -= d;
-			q |= 1;
+			low |= 1;
 		}
 	}
-	return q;
+#endif
+	return low;
 }
 
 /* floor(n / d) for d > 0, 64 bits by 64: one quotient bit per step, from the top one. */
