@@ -18,14 +18,6 @@ static inline int32_t fixed_saturate(int64_t v)
 	return v > INT32_MAX ? INT32_MAX : v < -INT32_MAX ? -INT32_MAX : (int32_t)v;
 }
 
-/* fixed_saturate((int64_t)a + b) in 32-bit arithmetic: the overflow test first. */
-static inline int32_t fixed_add(int32_t a, int32_t b)
-{
-	if (b > 0 ? a > INT32_MAX - b : a < -INT32_MAX - b)
-		return b > 0 ? INT32_MAX : -INT32_MAX;
-	return a + b;
-}
-
 /* A Cortex-M0 (ARMv6-M) multiplies only 32 x 32 -> 32 bits and cannot divide: there a
  * 64-bit product is a call to a general 64 x 64 routine (~40 instructions) and a 64-bit
  * quotient one to a general 64 / 64 routine (~500). The narrow forms below build the
@@ -72,15 +64,6 @@ static inline uint64_t fixed_umul64_narrow(uint32_t a, uint32_t b)
 	return ((uint64_t)high << 32) | low;
 }
 
-static inline uint64_t fixed_umul64(uint32_t a, uint32_t b)
-{
-#if FIXED_NARROW
-	return fixed_umul64_narrow(a, b);
-#else
-	return (uint64_t)a * b;
-#endif
-}
-
 /* The kernels below work on 64-bit values as two 32-bit halves (low, high): on the M0 a
  * 64-bit value in C costs register shuffles and carry tests the instruction set does in
  * one step. With GCC there the product and the sum are Thumb-1 assembly, the same steps
@@ -94,6 +77,60 @@ static inline uint64_t fixed_umul64(uint32_t a, uint32_t b)
 #define FIXED_ASM 0
 #define FIXED_PARTS static inline
 #endif
+
+/* fixed_saturate((int64_t)a + b) in 32-bit arithmetic: the overflow test first. */
+FIXED_PARTS int32_t fixed_add(int32_t a, int32_t b)
+{
+	if (b > 0 ? a > INT32_MAX - b : a < -INT32_MAX - b)
+		return b > 0 ? INT32_MAX : -INT32_MAX;
+	return a + b;
+}
+
+/* a b as (*high << 32) + *low for unsigned a and b, as fixed_umul64_narrow. */
+FIXED_PARTS void fixed_umul64_parts(uint32_t a, uint32_t b, uint32_t *low, uint32_t *high)
+{
+#if FIXED_ASM
+	uint32_t al, bl, product;
+	__asm__(".syntax unified\n\t"
+		"uxth %[al], %[a]\n\t"
+		"uxth %[bl], %[b]\n\t"
+		"lsrs %[a], %[a], #16\n\t"
+		"lsrs %[b], %[b], #16\n\t"
+		"movs %[p], %[al]\n\t"
+		"muls %[p], %[bl]\n\t" /* al bl */
+		"muls %[al], %[b]\n\t" /* al bh */
+		"muls %[bl], %[a]\n\t" /* ah bl */
+		"muls %[b], %[a]\n\t"  /* ah bh */
+		"lsls %[a], %[al], #16\n\t"
+		"lsrs %[al], %[al], #16\n\t"
+		"adds %[p], %[a]\n\t"
+		"adcs %[b], %[al]\n\t"
+		"lsls %[a], %[bl], #16\n\t"
+		"lsrs %[bl], %[bl], #16\n\t"
+		"adds %[p], %[a]\n\t"
+		"adcs %[b], %[bl]"
+		: [a] "+l"(a), [b] "+l"(b), [al] "=&l"(al), [bl] "=&l"(bl), [p] "=&l"(product)
+		:
+		: "cc");
+	*low = product;
+	*high = b;
+#else
+	uint64_t product = fixed_umul64_narrow(a, b);
+	*low = (uint32_t)product;
+	*high = (uint32_t)(product >> 32);
+#endif
+}
+
+FIXED_PARTS uint64_t fixed_umul64(uint32_t a, uint32_t b)
+{
+#if FIXED_NARROW
+	uint32_t low, high;
+	fixed_umul64_parts(a, b, &low, &high);
+	return ((uint64_t)high << 32) | low;
+#else
+	return (uint64_t)a * b;
+#endif
+}
 
 /* a b as (*high << 32) + *low, exactly. */
 FIXED_PARTS void fixed_wide_mul_parts(int32_t a, int32_t b, uint32_t *low, int32_t *high)
@@ -503,14 +540,26 @@ FIXED_KERNEL fixed_reciprocal fixed_reciprocal_of(int32_t d)
 
 FIXED_KERNEL int32_t fixed_times_reciprocal(int32_t x, fixed_reciprocal r)
 {
-	/* x 2^16 / d = x scale / 2^shift, rounded half away from zero. */
-	uint32_t magnitude = x < 0 ? 0u - (uint32_t)x : (uint32_t)x;
-	uint64_t q;
+	/* x 2^16 / d = x scale / 2^shift, rounded half away from zero: the product (below
+	 * 2^62) in 32-bit halves, and the shift (15 to 45) on them, not on 64 bits. */
+	uint32_t magnitude = x < 0 ? 0u - (uint32_t)x : (uint32_t)x, low, high, q;
 	if (r.scale == 0) /* d = 0: as fixed_div */
 		return x >= 0 ? FIXED_MAX : -FIXED_MAX;
-	q = (fixed_umul64(magnitude, r.scale) + ((uint64_t)1 << (r.shift - 1))) >> r.shift;
-	if (q > (uint64_t)INT32_MAX)
-		q = (uint64_t)INT32_MAX;
+	fixed_umul64_parts(magnitude, r.scale, &low, &high);
+	if (r.shift > 32) {
+		high += (uint32_t)1 << (r.shift - 33);
+		q = high >> (r.shift - 32);
+	} else {
+		uint32_t half = (uint32_t)1 << (r.shift - 1);
+		low += half;
+		high += low < half;
+		if (r.shift == 32)
+			q = high;
+		else
+			q = high >> r.shift ? UINT32_MAX : high << (32 - r.shift) | low >> r.shift;
+	}
+	if (q > (uint32_t)INT32_MAX)
+		q = (uint32_t)INT32_MAX;
 	return (x < 0) != r.negative ? -(int32_t)q : (int32_t)q;
 }
 

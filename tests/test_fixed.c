@@ -199,6 +199,16 @@ static void test_narrow_kernels(void)
 			    fixed_abs(fixed_times_reciprocal(a, fixed_reciprocal_of(b)) - fixed_div(a, b)) >
 				    1 + (fixed_abs(fixed_div(a, b)) >> 30))
 				mismatches++;
+			/* The reciprocal's product and shift, against 64-bit arithmetic. */
+			if (b != 0) {
+				fixed_reciprocal r = fixed_reciprocal_of(b);
+				uint32_t m = a < 0 ? 0u - (uint32_t)a : (uint32_t)a;
+				uint64_t p = ((uint64_t)m * r.scale + ((uint64_t)1 << (r.shift - 1))) >>
+					     r.shift;
+				int32_t expect = p > INT32_MAX ? INT32_MAX : (int32_t)p;
+				if (fixed_times_reciprocal(a, r) != ((a < 0) != (b < 0) ? -expect : expect))
+					mismatches++;
+			}
 			/* Division rounds to nearest, halves away from zero. */
 			if (b != 0 && fixed_div(a, b) != fixed_saturate(reference_round_div(a, b)))
 				mismatches++;
