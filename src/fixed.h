@@ -203,12 +203,12 @@ FIXED_PARTS int32_t fixed_round_parts(uint32_t low, int32_t high)
 {
 	int32_t v;
 	fixed_add_parts(&low, &high, 0x8000u, 0);
-	if (high >= 0x8000)
-		return INT32_MAX;
-	if (high < -0x8000)
-		return -INT32_MAX;
-	v = high * 65536 + (int32_t)(low >> 16);
-	return v == INT32_MIN ? -INT32_MAX : v;
+	/* In range when high is in [-2^15, 2^15), but for -2^31 itself: one unsigned test
+	 * (the conversion to int32_t wraps, as on every compiler rt supports). */
+	v = (int32_t)(((uint32_t)high << 16) | (low >> 16));
+	if (((uint32_t)high + 0x8000u) >> 16 || v == INT32_MIN)
+		return high < 0 ? -INT32_MAX : INT32_MAX;
+	return v;
 }
 
 /* fixed_mul, fixed_dot3 and the dot product as 64 bits, from the parts. */
