@@ -47,6 +47,21 @@ uint64_t fixed_isqrt64(uint64_t x)
 	 * one more root bit per two bits of the low word: trying root bit 1 adds
 	 * (2 root + 1)^2 - (2 root)^2 = 4 root + 1 to the square. */
 	root = isqrt_remainder32((uint32_t)(x >> 32), &rem32);
+	if (!(x >> 60)) {
+		/* The root stays below 2^30 and the remainder at most twice the root: every
+		 * step fits 32 bits (squared lengths of a scaled scene are all this small). */
+		for (i = 0; i < 16; i++) {
+			uint32_t trial = (root << 2) | 1u;
+			rem32 = (rem32 << 2) | (low >> 30);
+			low <<= 2;
+			root <<= 1;
+			if (rem32 >= trial) {
+				rem32 -= trial;
+				root |= 1u;
+			}
+		}
+		return rem32 > root ? (uint64_t)root + 1 : root;
+	}
 	rem = rem32;
 	for (i = 0; i < 16; i++) {
 		uint64_t trial = ((uint64_t)root << 2) | 1u;

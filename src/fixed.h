@@ -64,13 +64,190 @@ static inline uint64_t fixed_umul64_narrow(uint32_t a, uint32_t b)
 	return ((uint64_t)high << 32) | low;
 }
 
-static inline uint64_t fixed_umul64(uint32_t a, uint32_t b)
+/* The kernels below work on 64-bit values as two 32-bit halves (low, high): on the M0 a
+ * 64-bit value in C costs register shuffles and carry tests the instruction set does in
+ * one step. With GCC there the product and the sum are Thumb-1 assembly, the same steps
+ * as fixed_wide_mul_narrow and a 64-bit add; elsewhere C with the same results, so the
+ * unit tests check the forms built on them on every build. */
+#if FIXED_NARROW && defined(__GNUC__)
+#define FIXED_ASM 1
+/* Inlined into the kernels that use them, whatever -Os thinks: that is their point. */
+#define FIXED_PARTS static inline __attribute__((always_inline))
+#else
+#define FIXED_ASM 0
+#define FIXED_PARTS static inline
+#endif
+
+/* fixed_saturate((int64_t)a + b) in 32-bit arithmetic: the overflow test first. */
+FIXED_PARTS int32_t fixed_add(int32_t a, int32_t b)
+{
+	if (b > 0 ? a > INT32_MAX - b : a < -INT32_MAX - b)
+		return b > 0 ? INT32_MAX : -INT32_MAX;
+	return a + b;
+}
+
+/* a b as (*high << 32) + *low for unsigned a and b, as fixed_umul64_narrow. */
+FIXED_PARTS void fixed_umul64_parts(uint32_t a, uint32_t b, uint32_t *low, uint32_t *high)
+{
+#if FIXED_ASM
+	uint32_t al, bl, product;
+	__asm__(".syntax unified\n\t"
+		"uxth %[al], %[a]\n\t"
+		"uxth %[bl], %[b]\n\t"
+		"lsrs %[a], %[a], #16\n\t"
+		"lsrs %[b], %[b], #16\n\t"
+		"movs %[p], %[al]\n\t"
+		"muls %[p], %[bl]\n\t" /* al bl */
+		"muls %[al], %[b]\n\t" /* al bh */
+		"muls %[bl], %[a]\n\t" /* ah bl */
+		"muls %[b], %[a]\n\t"  /* ah bh */
+		"lsls %[a], %[al], #16\n\t"
+		"lsrs %[al], %[al], #16\n\t"
+		"adds %[p], %[a]\n\t"
+		"adcs %[b], %[al]\n\t"
+		"lsls %[a], %[bl], #16\n\t"
+		"lsrs %[bl], %[bl], #16\n\t"
+		"adds %[p], %[a]\n\t"
+		"adcs %[b], %[bl]"
+		: [a] "+l"(a), [b] "+l"(b), [al] "=&l"(al), [bl] "=&l"(bl), [p] "=&l"(product)
+		:
+		: "cc");
+	*low = product;
+	*high = b;
+#else
+	uint64_t product = fixed_umul64_narrow(a, b);
+	*low = (uint32_t)product;
+	*high = (uint32_t)(product >> 32);
+#endif
+}
+
+FIXED_PARTS uint64_t fixed_umul64(uint32_t a, uint32_t b)
 {
 #if FIXED_NARROW
-	return fixed_umul64_narrow(a, b);
+	uint32_t low, high;
+	fixed_umul64_parts(a, b, &low, &high);
+	return ((uint64_t)high << 32) | low;
 #else
 	return (uint64_t)a * b;
 #endif
+}
+
+/* a b as (*high << 32) + *low, exactly. */
+FIXED_PARTS void fixed_wide_mul_parts(int32_t a, int32_t b, uint32_t *low, int32_t *high)
+{
+#if FIXED_ASM
+	uint32_t al, bl, product;
+	/* a and b become their high halves; the four products, then each cross product
+	 * added at bit 16 with its carry. GCC hands Thumb-1 inline assembly to the
+	 * assembler in the old divided syntax: these lines are in unified syntax. */
+	__asm__(".syntax unified\n\t"
+		"uxth %[al], %[a]\n\t"
+		"uxth %[bl], %[b]\n\t"
+		"asrs %[a], %[a], #16\n\t"
+		"asrs %[b], %[b], #16\n\t"
+		"movs %[p], %[al]\n\t"
+		"muls %[p], %[bl]\n\t" /* al bl */
+		"muls %[al], %[b]\n\t" /* al bh */
+		"muls %[bl], %[a]\n\t" /* ah bl */
+		"muls %[b], %[a]\n\t"  /* ah bh */
+		"lsls %[a], %[al], #16\n\t"
+		"asrs %[al], %[al], #16\n\t"
+		"adds %[p], %[a]\n\t"
+		"adcs %[b], %[al]\n\t"
+		"lsls %[a], %[bl], #16\n\t"
+		"asrs %[bl], %[bl], #16\n\t"
+		"adds %[p], %[a]\n\t"
+		"adcs %[b], %[bl]"
+		: [a] "+l"(a), [b] "+l"(b), [al] "=&l"(al), [bl] "=&l"(bl), [p] "=&l"(product)
+		:
+		: "cc");
+	*low = product;
+	*high = b;
+#else
+	int64_t product = fixed_wide_mul_narrow(a, b);
+	*low = (uint32_t)product;
+	*high = (int32_t)(product >> 32);
+#endif
+}
+
+/* (*high, *low) += (high, low), wrapping as 64-bit two's complement. */
+FIXED_PARTS void fixed_add_parts(uint32_t *low, int32_t *high, uint32_t add_low,
+				   int32_t add_high)
+{
+#if FIXED_ASM
+	uint32_t l = *low;
+	int32_t h = *high;
+	__asm__(".syntax unified\n\t"
+		"adds %[l], %[al]\n\t"
+		"adcs %[h], %[ah]"
+		: [l] "+l"(l), [h] "+l"(h)
+		: [al] "l"(add_low), [ah] "l"(add_high)
+		: "cc");
+	*low = l;
+	*high = h;
+#else
+	uint32_t sum = *low + add_low;
+	*high = (int32_t)((uint32_t)*high + (uint32_t)add_high + (sum < add_low));
+	*low = sum;
+#endif
+}
+
+FIXED_PARTS int64_t fixed_join_parts(uint32_t low, int32_t high)
+{
+	return (int64_t)(((uint64_t)(uint32_t)high << 32) | low);
+}
+
+/* fixed_saturate(((high << 32) + low + 2^15) >> 16): a Q32.32 value rounded to Q16.16,
+ * in 32-bit steps. */
+FIXED_PARTS int32_t fixed_round_parts(uint32_t low, int32_t high)
+{
+	int32_t v;
+	fixed_add_parts(&low, &high, 0x8000u, 0);
+	/* In range when high is in [-2^15, 2^15), but for -2^31 itself: one unsigned test
+	 * (the conversion to int32_t wraps, as on every compiler rt supports). */
+	v = (int32_t)(((uint32_t)high << 16) | (low >> 16));
+	if (((uint32_t)high + 0x8000u) >> 16 || v == INT32_MIN)
+		return high < 0 ? -INT32_MAX : INT32_MAX;
+	return v;
+}
+
+/* fixed_mul, fixed_dot3 and the dot product as 64 bits, from the parts. */
+FIXED_PARTS int32_t fixed_mul_narrow(int32_t a, int32_t b)
+{
+	uint32_t low;
+	int32_t high;
+	fixed_wide_mul_parts(a, b, &low, &high);
+	return fixed_round_parts(low, high);
+}
+
+FIXED_PARTS void fixed_dot3_parts(int32_t ax, int32_t ay, int32_t az, int32_t bx,
+				    int32_t by, int32_t bz, uint32_t *low, int32_t *high)
+{
+	uint32_t l;
+	int32_t h;
+	fixed_wide_mul_parts(ax, bx, low, high);
+	fixed_wide_mul_parts(ay, by, &l, &h);
+	fixed_add_parts(low, high, l, h);
+	fixed_wide_mul_parts(az, bz, &l, &h);
+	fixed_add_parts(low, high, l, h);
+}
+
+FIXED_PARTS int32_t fixed_dot3_narrow(int32_t ax, int32_t ay, int32_t az, int32_t bx,
+					int32_t by, int32_t bz)
+{
+	uint32_t low;
+	int32_t high;
+	fixed_dot3_parts(ax, ay, az, bx, by, bz, &low, &high);
+	return fixed_round_parts(low, high);
+}
+
+FIXED_PARTS int64_t fixed_dot3_wide_narrow(int32_t ax, int32_t ay, int32_t az, int32_t bx,
+					     int32_t by, int32_t bz)
+{
+	uint32_t low;
+	int32_t high;
+	fixed_dot3_parts(ax, ay, az, bx, by, bz, &low, &high);
+	return fixed_join_parts(low, high);
 }
 
 /* Number of significant bits of x (0 for 0), by halving: a few steps, no loop. */
@@ -106,33 +283,52 @@ static inline int fixed_bit_length(uint64_t x)
 }
 
 /* floor(n / d) for d > 0, or UINT32_MAX when the quotient does not fit 32 bits: one
- * quotient bit per step, from a remainder that always stays below d. */
+ * quotient bit per step, from a remainder that always stays below d. The low word of n
+ * is shifted out at the top as the quotient bits are shifted in at the bottom. */
 static inline uint32_t fixed_udiv_narrow(uint64_t n, uint32_t d)
 {
-	/* The quotient has at most `bits` bits: start with the remainder n >> bits (< d) and
-	 * bring down one bit of n per step, skipping the quotient's leading zeros. */
-	int bits = fixed_bit_length(n) - fixed_bit_length(d) + 1, i;
-	uint32_t rem, low, q = 0;
-	if (bits <= 0)
-		return 0;
-	if ((uint32_t)(n >> 32) >= d)
+	uint32_t rem = (uint32_t)(n >> 32), low = (uint32_t)n;
+	int steps = 32;
+	if (rem >= d)
 		return UINT32_MAX; /* the quotient needs more than 32 bits */
-	if (bits > 32)
-		bits = 32;
-	rem = (uint32_t)(n >> bits);
-	low = bits == 32 ? (uint32_t)n : (uint32_t)n << (32 - bits);
-	for (i = 0; i < bits; i++) {
+	if (!(rem >> 16) && ((rem << 16) | (low >> 16)) < d) {
+		/* At most 16 quotient bits (a result below 1.0): start 16 bits further on. */
+		rem = (rem << 16) | (low >> 16);
+		low <<= 16;
+		steps = 16;
+	}
+#if FIXED_ASM
+	/* (rem, low) shifts left as one 64-bit number; a carry out of rem means the
+	 * remainder passed 2^32 > d. */
+	__asm__(".syntax unified\n"
+		"1:\n\t"
+		"adds %[low], %[low]\n\t"
+		"adcs %[rem], %[rem]\n\t"
+		"bcs 2f\n\t"
+		"cmp %[rem], %[d]\n\t"
+		"bcc 3f\n"
+		"2:\n\t"
+		"subs %[rem], %[d]\n\t"
+		"adds %[low], #1\n"
+		"3:\n\t"
+		"subs %[steps], #1\n\t"
+		"bne 1b"
+		: [low] "+l"(low), [rem] "+l"(rem), [steps] "+l"(steps)
+		: [d] "l"(d)
+		: "cc");
+#else
+	for (; steps > 0; steps--) {
 		/* rem < d, so 2 rem + 1 < 2^33: the bit shifted out is the 33rd. */
 		uint32_t carry = rem >> 31;
 		rem = (rem << 1) | (low >> 31);
 		low <<= 1;
-		q <<= 1;
 		if (carry || rem >= d) {
 			rem -= d;
-			q |= 1;
+			low |= 1;
 		}
 	}
-	return q;
+#endif
+	return low;
 }
 
 /* floor(n / d), 64 bits by 64 (UINT64_MAX for d = 0): one quotient bit per step, from
@@ -176,6 +372,8 @@ FIXED_KERNEL int32_t fixed_round_div_sat(int64_t n, int32_t d); /* rounded, satu
 FIXED_KERNEL int32_t fixed_mul(int32_t a, int32_t b);
 FIXED_KERNEL int32_t fixed_dot3(int32_t ax, int32_t ay, int32_t az, int32_t bx, int32_t by,
 				int32_t bz);
+FIXED_KERNEL int64_t fixed_dot3_wide(int32_t ax, int32_t ay, int32_t az, int32_t bx,
+				     int32_t by, int32_t bz); /* as 64 bits, exactly */
 FIXED_KERNEL int32_t fixed_div(int32_t a, int32_t b);
 FIXED_KERNEL int32_t fixed_abs(int32_t a);
 FIXED_KERNEL int32_t fixed_from_int(long i);
@@ -197,7 +395,10 @@ FIXED_KERNEL int32_t fixed_times_reciprocal(int32_t x, fixed_reciprocal r); /* x
 FIXED_KERNEL int64_t fixed_wide_mul(int32_t a, int32_t b)
 {
 #if FIXED_NARROW
-	return fixed_wide_mul_narrow(a, b);
+	uint32_t low;
+	int32_t high;
+	fixed_wide_mul_parts(a, b, &low, &high);
+	return fixed_join_parts(low, high);
 #else
 	return (int64_t)a * b;
 #endif
@@ -256,16 +457,33 @@ FIXED_KERNEL int32_t fixed_round_div_sat(int64_t n, int32_t d)
 
 FIXED_KERNEL int32_t fixed_mul(int32_t a, int32_t b)
 {
-	return fixed_saturate((fixed_wide_mul(a, b) + 0x8000) >> 16);
+#if FIXED_NARROW
+	return fixed_mul_narrow(a, b);
+#else
+	return fixed_saturate(((int64_t)a * b + 0x8000) >> 16);
+#endif
 }
 
 /* A dot product summed in 64 bits and rounded once. */
 FIXED_KERNEL int32_t fixed_dot3(int32_t ax, int32_t ay, int32_t az, int32_t bx, int32_t by,
 				 int32_t bz)
 {
-	return fixed_saturate(
-		(fixed_wide_mul(ax, bx) + fixed_wide_mul(ay, by) + fixed_wide_mul(az, bz) + 0x8000) >>
-		16);
+#if FIXED_NARROW
+	return fixed_dot3_narrow(ax, ay, az, bx, by, bz);
+#else
+	return fixed_saturate(((int64_t)ax * bx + (int64_t)ay * by + (int64_t)az * bz + 0x8000) >>
+			      16);
+#endif
+}
+
+FIXED_KERNEL int64_t fixed_dot3_wide(int32_t ax, int32_t ay, int32_t az, int32_t bx,
+				     int32_t by, int32_t bz)
+{
+#if FIXED_NARROW
+	return fixed_dot3_wide_narrow(ax, ay, az, bx, by, bz);
+#else
+	return (int64_t)ax * bx + (int64_t)ay * by + (int64_t)az * bz;
+#endif
 }
 
 FIXED_KERNEL int32_t fixed_div(int32_t a, int32_t b)
@@ -303,7 +521,9 @@ FIXED_KERNEL int64_t fixed_scale2(int64_t w, int32_t a)
 	uint64_t product;
 	if (ma == 0 || mh == 0)
 		return 0;
-	if (fixed_bit_length(mh) + fixed_bit_length(ma) > 63)
+	/* The usual factor is near one (a squared unit length): its 17 bits and the 46 of
+	 * |high| cannot pass 2^63, and then no bit lengths are needed. */
+	if ((ma >> 17 || mh >> 46) && fixed_bit_length(mh) + fixed_bit_length(ma) > 63)
 		return (high < 0) != (a < 0) ? -INT64_MAX : INT64_MAX;
 	/* |high| |a| < 2^63 here: split |high| into 32-bit halves, each times |a| exactly. */
 	product = (fixed_umul64((uint32_t)(mh >> 32), ma) << 32) + fixed_umul64((uint32_t)mh, ma);
@@ -323,14 +543,26 @@ FIXED_KERNEL fixed_reciprocal fixed_reciprocal_of(int32_t d)
 
 FIXED_KERNEL int32_t fixed_times_reciprocal(int32_t x, fixed_reciprocal r)
 {
-	/* x 2^16 / d = x scale / 2^shift, rounded half away from zero. */
-	uint32_t magnitude = x < 0 ? 0u - (uint32_t)x : (uint32_t)x;
-	uint64_t q;
+	/* x 2^16 / d = x scale / 2^shift, rounded half away from zero: the product (below
+	 * 2^62) in 32-bit halves, and the shift (15 to 45) on them, not on 64 bits. */
+	uint32_t magnitude = x < 0 ? 0u - (uint32_t)x : (uint32_t)x, low, high, q;
 	if (r.scale == 0) /* d = 0: as fixed_div */
 		return x >= 0 ? FIXED_MAX : -FIXED_MAX;
-	q = (fixed_umul64(magnitude, r.scale) + ((uint64_t)1 << (r.shift - 1))) >> r.shift;
-	if (q > (uint64_t)INT32_MAX)
-		q = (uint64_t)INT32_MAX;
+	fixed_umul64_parts(magnitude, r.scale, &low, &high);
+	if (r.shift > 32) {
+		high += (uint32_t)1 << (r.shift - 33);
+		q = high >> (r.shift - 32);
+	} else {
+		uint32_t half = (uint32_t)1 << (r.shift - 1);
+		low += half;
+		high += low < half;
+		if (r.shift == 32)
+			q = high;
+		else
+			q = high >> r.shift ? UINT32_MAX : high << (32 - r.shift) | low >> r.shift;
+	}
+	if (q > (uint32_t)INT32_MAX)
+		q = (uint32_t)INT32_MAX;
 	return (x < 0) != r.negative ? -(int32_t)q : (int32_t)q;
 }
 

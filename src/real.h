@@ -81,7 +81,7 @@ typedef int64_t real2; /* Q32.32: squares and products of lengths */
 #define REAL_C(x) ((real)((x) * 65536.0 + ((x) < 0 ? -0.5 : 0.5)))
 #define REAL_MAX ((real)0x7FFFFFFF)
 #define real_mul(a, b) fixed_mul((a), (b))
-#define real_add(a, b) fixed_saturate((int64_t)(a) + (b))
+#define real_add(a, b) fixed_add((a), (b))
 #define real_dot3(ax, ay, az, bx, by, bz) fixed_dot3((ax), (ay), (az), (bx), (by), (bz))
 #define real_div(a, b) fixed_div((a), (b))
 #define real_sqrt(a) fixed_sqrt(a)
@@ -93,6 +93,7 @@ typedef int64_t real2; /* Q32.32: squares and products of lengths */
 #define real_from_int(i) fixed_from_int(i)
 #define real_to_int(x) ((x) >> 16)
 #define real_mul2(a, b) fixed_wide_mul((a), (b))
+#define real2_dot3(ax, ay, az, bx, by, bz) fixed_dot3_wide((ax), (ay), (az), (bx), (by), (bz))
 #define real2_from(a) ((real2)(a) * 65536)
 #define real2_sqrt(w) fixed_sqrt2(w)
 #define real2_div(w, b) fixed_div2((w), (b))
@@ -176,6 +177,7 @@ static inline real real_ldexp_(real x, int e)
 #define real_from_int(i) ((real)(i))
 #define real_to_int(x) ((int)(x))
 #define real_mul2(a, b) ((a) * (b))
+#define real2_dot3(ax, ay, az, bx, by, bz) ((ax) * (bx) + (ay) * (by) + (az) * (bz))
 #define real2_from(a) (a)
 #define real2_sqrt(w) real_sqrt(w)
 #define real2_div(w, b) ((w) / (b))
@@ -191,7 +193,7 @@ typedef real real_reciprocal;
 #endif
 /* real2 is the type of squared lengths and products of two lengths (dot products of
  * positions, areas, quadratic coefficients): real_mul2(a, b) is a * b as a real2,
- * real2_from widens, real2_sqrt gives back a real length, real2_div(w, b) is w / b as a
+ * real2_dot3 is a dot product as a real2, real2_from widens, real2_sqrt gives back a real length, real2_div(w, b) is w / b as a
  * real, real2_ratio(a, b) is a / b as a real, real2_scale(w, a) is w * a for a unitless a. */
 
 #define real_min(a, b) ((a) < (b) ? (a) : (b))

@@ -94,7 +94,7 @@ VEC_FUNCTION vec3 vec_cross(vec3 a, vec3 b)
 /* a . b as a real2: for positions, whose products need the wider type in fixed point. */
 VEC_FUNCTION real2 vec_dot2(vec3 a, vec3 b)
 {
-	return real_mul2(a.x, b.x) + real_mul2(a.y, b.y) + real_mul2(a.z, b.z);
+	return real2_dot3(a.x, a.y, a.z, b.x, b.y, b.z);
 }
 
 VEC_FUNCTION real vec_length(vec3 a) { return real2_sqrt(vec_dot2(a, a)); }

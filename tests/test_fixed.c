@@ -56,6 +56,11 @@ static void test_roots(void)
 	CHECK(fixed_isqrt64(UINT64_MAX) == (uint64_t)1 << 32);
 	CHECK(fixed_isqrt64(((uint64_t)1 << 32) + 1) == (uint64_t)1 << 16);
 	CHECK(fixed_isqrt64((uint64_t)4294967295u * 4294967295u) == 4294967295u);
+	/* Either side of 2^60, where the digit loop leaves 32-bit arithmetic. */
+	CHECK(fixed_isqrt64(((uint64_t)1 << 60) - 1) == (uint64_t)1 << 30);
+	CHECK(fixed_isqrt64((uint64_t)1073741823u * 1073741823u + 1073741823u) == 1073741823u);
+	CHECK(fixed_isqrt64((uint64_t)1 << 60) == (uint64_t)1 << 30);
+	CHECK(fixed_isqrt64(((uint64_t)1 << 60) + ((uint64_t)1 << 31)) == ((uint64_t)1 << 30) + 1);
 	{
 		/* Against the exact rule, on seeded random numbers of every size: r is the
 		 * rounded root when (r - 1/2)^2 <= x < (r + 1/2)^2, i.e. r^2 - r < x <= r^2 + r. */
@@ -176,14 +181,34 @@ static void test_narrow_kernels(void)
 			if (fixed_udiv64_narrow(n * 977, d) != n * 977 / d ||
 			    fixed_udiv64_narrow(n, n / 3 + 1) != n / (n / 3 + 1))
 				mismatches++;
+			if (fixed_add(a, b) != fixed_saturate((int64_t)a + b))
+				mismatches++;
 			/* And the kernels built on them, against their 64-bit definitions. */
-			if (fixed_mul(a, b) != fixed_saturate(((int64_t)a * b + 0x8000) >> 16))
+			if (fixed_mul(a, b) != fixed_saturate(((int64_t)a * b + 0x8000) >> 16) ||
+			    fixed_mul_narrow(a, b) != fixed_mul(a, b))
+				mismatches++;
+			/* Halved, so that three products sum within 63 bits. */
+			if (fixed_dot3_narrow(a >> 1, b, (a ^ b) >> 1, b >> 1, a, b >> 3) !=
+				    fixed_dot3(a >> 1, b, (a ^ b) >> 1, b >> 1, a, b >> 3) ||
+			    fixed_dot3_wide_narrow(a >> 1, -(b >> 1), b, b, a >> 1, a >> 5) !=
+				    (int64_t)(a >> 1) * b - (int64_t)(b >> 1) * (a >> 1) +
+					    (int64_t)b * (a >> 5))
 				mismatches++;
 			/* One reciprocal for many divisions: within an LSB of dividing (two past 2^30). */
 			if (b != 0 && fixed_div(a, b) != FIXED_MAX && fixed_div(a, b) != -FIXED_MAX &&
 			    fixed_abs(fixed_times_reciprocal(a, fixed_reciprocal_of(b)) - fixed_div(a, b)) >
 				    1 + (fixed_abs(fixed_div(a, b)) >> 30))
 				mismatches++;
+			/* The reciprocal's product and shift, against 64-bit arithmetic. */
+			if (b != 0) {
+				fixed_reciprocal r = fixed_reciprocal_of(b);
+				uint32_t m = a < 0 ? 0u - (uint32_t)a : (uint32_t)a;
+				uint64_t p = ((uint64_t)m * r.scale + ((uint64_t)1 << (r.shift - 1))) >>
+					     r.shift;
+				int32_t expect = p > INT32_MAX ? INT32_MAX : (int32_t)p;
+				if (fixed_times_reciprocal(a, r) != ((a < 0) != (b < 0) ? -expect : expect))
+					mismatches++;
+			}
 			/* Division rounds to nearest, halves away from zero. */
 			if (b != 0 && fixed_div(a, b) != fixed_saturate(reference_round_div(a, b)))
 				mismatches++;
@@ -197,6 +222,15 @@ static void test_narrow_kernels(void)
 	CHECK(fixed_udiv_narrow(UINT64_MAX, UINT32_MAX) == UINT32_MAX);
 	CHECK(fixed_udiv_narrow(UINT64_MAX - 1, UINT32_MAX) == UINT32_MAX);
 	CHECK(fixed_udiv_narrow(7, 2) == 3);
+	/* Rounding a Q32.32 sum to Q16.16 saturates at +-INT32_MAX, never INT32_MIN. */
+	CHECK_INT(fixed_dot3_narrow(INT32_MIN, 0, 0, 65536, 0, 0), -INT32_MAX);
+	CHECK_INT(fixed_dot3_narrow(INT32_MIN + 1, 0, 0, 65536, 0, 0), -INT32_MAX);
+	CHECK_INT(fixed_dot3_narrow(INT32_MAX, 0, 0, 65536, 0, 0), INT32_MAX);
+	CHECK_INT(fixed_mul_narrow(-65536, 65535), -65535);
+	CHECK_INT(fixed_mul_narrow(-1, 32768), 0);  /* -0.5 LSB rounds towards +infinity */
+	CHECK_INT(fixed_mul_narrow(-1, 32769), -1);
+	CHECK_INT(fixed_mul_narrow(INT32_MAX, INT32_MAX), INT32_MAX);
+	CHECK_INT(fixed_mul_narrow(INT32_MAX, -INT32_MAX), -INT32_MAX);
 	CHECK_INT(fixed_div(Q(1.0), -Q(3.0)), -21845);
 	CHECK_INT(fixed_div(3, 2 * 65536), 2); /* 1.5 LSB rounds away from zero */
 	CHECK_INT(fixed_div(-3, 2 * 65536), -2);
