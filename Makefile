@@ -89,6 +89,21 @@ check-clang: $(TYPES:%=build/clang/rt-%)
 build/unit-tests-%: $(LIB_SRC) $(TEST_SRC) $(wildcard src/*.h tests/*.h)
 	@mkdir -p $(@D)
 	$(CC) $(RT_CFLAGS) $(VARIANT_FLAGS_$*) -Isrc $(CPPFLAGS) $(CFLAGS) -o $@ $(LIB_SRC) $(TEST_SRC) $(LDLIBS) $(RT_LDLIBS)
+# Q16.16: the library is built as build/rt-fixed is, with no floating point
+# (-mgeneral-regs-only on x86-64), file by file into build/fixed/. The tests themselves
+# cannot do without it: they build their reference rays, rotations and expected values
+# in double and compare through test.h's double checks. So the test files are built
+# with -DRT_REAL_FIXED but without -mgeneral-regs-only, and linked with that library.
+FIXED_LIB_OBJ = $(LIB_SRC:src/%.c=build/fixed/%.o)
+FIXED_TEST_OBJ = $(TEST_SRC:tests/%.c=build/fixed/tests/%.o)
+build/fixed/%.o: src/%.c
+	@mkdir -p $(@D)
+	$(CC) $(RT_CFLAGS) $(VARIANT_FLAGS_fixed) $(CPPFLAGS) $(CFLAGS) -c -o $@ $<
+build/fixed/tests/%.o: tests/%.c
+	@mkdir -p $(@D)
+	$(CC) $(RT_CFLAGS) $(filter -D%,$(VARIANT_FLAGS_fixed)) -Isrc $(CPPFLAGS) $(CFLAGS) -c -o $@ $<
+build/unit-tests-fixed: $(FIXED_TEST_OBJ) $(FIXED_LIB_OBJ)
+	$(CC) $(LDFLAGS) -o $@ $(FIXED_TEST_OBJ) $(FIXED_LIB_OBJ) $(LDLIBS) $(RT_LDLIBS)
 algorithms: $(ALGORITHMS:%=build/rt-%)
 
 build/rt-%: $(SRC) $(wildcard src/*.h)
@@ -96,7 +111,7 @@ build/rt-%: $(SRC) $(wildcard src/*.h)
 	$(CC) $(WARN) -ffp-contract=off $(VARIANT_FLAGS_$*) $(CPPFLAGS) $(CFLAGS) -o $@ $(SRC) $(LDLIBS) $(RT_LDLIBS)
 
 test: rt build/unit-tests build/san/rt build/san/unit-tests build/san/replay build/san/replay-fixed \
-      build/unit-tests-float build/unit-tests-ref build/rt-fixed build/rt-ref $(MCU_TEST)
+      build/unit-tests-float build/unit-tests-ref build/unit-tests-fixed build/rt-fixed build/rt-ref $(MCU_TEST)
 	@sh tests/run.sh
 
 # Fuzzing with libFuzzer (clang): `make fuzz FUZZ_SECONDS=600` (FUZZ_TYPE=fixed fuzzes
@@ -236,4 +251,4 @@ clean:
 
 .PHONY: all mcu mcu-builtin FORCE mcu-ready mcu-tools test-mcu test install uninstall clean fuzz fuzz-merge variants algorithms check-clang lint
 
--include $(OBJ:.o=.d) $(TEST_OBJ:.o=.d)
+-include $(OBJ:.o=.d) $(TEST_OBJ:.o=.d) $(FIXED_LIB_OBJ:.o=.d) $(FIXED_TEST_OBJ:.o=.d)

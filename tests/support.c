@@ -2,7 +2,11 @@
  * See LICENSE for copyright and licence. */
 #include "support.h"
 
+#include <math.h>
+#include <string.h>
+
 #include "parse.h"
+#include "test.h"
 
 ray test_ray(vec3 origin, vec3 dir)
 {
@@ -40,4 +44,34 @@ int test_parse_text(scene *s, const char *name, const char *text, diag_sink_fn s
 	ok = parse_scene(s, name, read_text, &t);
 	diag_set_sink(NULL, NULL);
 	return ok;
+}
+
+int test_parse_buffer(scene *s, const char *name, const char *text, diag_sink_fn sink,
+		      void *ctx)
+{
+	int ok;
+	diag_set_sink(sink ? sink : drop, ctx);
+	ok = parse_scene_buffer(s, name, text, strlen(text));
+	diag_set_sink(NULL, NULL);
+	return ok;
+}
+
+int test_shift(double extent)
+{
+	/* As parse_scene_source measures: at scale 1 when the extent fits there, else at
+	 * REAL_FIRST_PASS_SHIFT. */
+	if (extent < 32767.0)
+		return real_length_shift(test_real(extent), 0);
+	return real_length_shift(test_real(ldexp(extent, REAL_FIRST_PASS_SHIFT)),
+				 REAL_FIRST_PASS_SHIFT);
+}
+
+real test_scaled(double x, int shift)
+{
+	return test_real(ldexp(x, shift));
+}
+
+double test_scale(int shift)
+{
+	return ldexp(1.0, shift);
 }

@@ -14,4 +14,18 @@ ray test_ray(vec3 origin, vec3 dir);
 int test_parse_text(scene *s, const char *name, const char *text, diag_sink_fn sink,
 		    void *ctx);
 
+/* Parses a scene held in a string as a scene file is loaded (parse_scene_buffer: in fixed
+ * point measured, scaled, and refused when out of range). */
+int test_parse_buffer(scene *s, const char *name, const char *text, diag_sink_fn sink,
+		      void *ctx);
+
+/* The power of two by which the parser scales a scene whose largest coordinate is
+ * `extent` (real_length_shift; always 0 in floating point), and a length at that scale
+ * as `real`, rounded once. */
+int test_shift(double extent);
+real test_scaled(double x, int shift);
+
+/* 2^shift as a double, to bring a scaled result back to the case's own units. */
+double test_scale(int shift);
+
 #endif

@@ -4,6 +4,7 @@
 #ifndef RT_TEST_H
 #define RT_TEST_H
 
+#include <math.h>
 #include <stdio.h>
 
 #include "real.h"
@@ -23,13 +24,76 @@ int test_check_int(long actual, long expected, const char *file, int line, const
 #define CHECK_INT(actual, expected)                                                           \
 	test_check_int((long)(actual), (long)(expected), __FILE__, __LINE__, #actual)
 
+/* One Q16.16 step, 2^-16: the unit in which fixed-point tolerances are counted. */
+#define LSB (1.0 / 65536.0)
+
 /* Tolerance for a result the reference gives to `digits` significant digits in double,
- * relaxed for float; the hard-case tables give both. */
+ * relaxed for float; the hard-case tables give both. TOL3 adds Q16.16's, in units (as a
+ * count of LSB at the scale the case runs at, with its reason beside it). In fixed point
+ * every case states its own: TOL does not compile there. */
 #if defined(RT_REAL_FLOAT)
 #define TOL(float_tol, double_tol) (float_tol)
+#define TOL3(float_tol, double_tol, fixed_tol) (float_tol)
+#elif REAL_FIXED
+#define TOL(float_tol, double_tol) TOL_has_no_fixed_point_tolerance_use_TOL3
+#define TOL3(float_tol, double_tol, fixed_tol) (fixed_tol)
 #else
 #define TOL(float_tol, double_tol) (double_tol)
+#define TOL3(float_tol, double_tol, fixed_tol) (double_tol)
 #endif
+
+/* Between `real` and double. A Q16.16 real holds its value times 2^16, so a cast would
+ * read LSBs as units: test_double scales, and test_real rounds to the nearest LSB and
+ * saturates. In floating point both are plain conversions, as casts were. */
+#if REAL_FIXED
+static inline double test_double(real x)
+{
+	return x / 65536.0;
+}
+static inline double test_double2(real2 x) /* a Q32.32 square */
+{
+	return (double)x / 4294967296.0;
+}
+static inline real test_real(double x)
+{
+	double v = x * 65536.0;
+	if (!(v < 2147483647.0))
+		return REAL_MAX;
+	if (!(v > -2147483647.0))
+		return -REAL_MAX;
+	return (real)(v < 0 ? v - 0.5 : v + 0.5);
+}
+#else
+#define test_double(x) ((double)(x))
+#define test_double2(x) ((double)(x))
+#define test_real(x) ((real)(x))
+#endif
+
+/* Numbers in case tables: `real` in floating point, rounded where written (REAL_C); in
+ * fixed point doubles, rounded once at the scale the case runs at: CASE_REAL(x, shift)
+ * is x times 2^shift as `real` there, and x itself in floating point (shift 0). */
+#if REAL_FIXED
+typedef double case_real;
+#define CASE_C(x) (x)
+#define CASE_REAL(x, shift) test_real(ldexp((x), (shift)))
+#else
+typedef real case_real;
+#define CASE_C(x) REAL_C(x)
+#define CASE_REAL(x, shift) ((void)(shift), (x))
+#endif
+
+/* The same for a real2 (a squared length). */
+#define CHECK_REAL2(actual, expected, tol)                                                   \
+	test_check_near(test_double2(actual), (double)(expected), (double)(tol), __FILE__,       \
+			__LINE__, #actual)
+
+/* A vector of literals, each as `real`. */
+#define VEC_C(x, y, z) vec_make(REAL_C(x), REAL_C(y), REAL_C(z))
+
+/* A check on a `real` against a double, in units. */
+#define CHECK_REAL(actual, expected, tol)                                                    \
+	test_check_near(test_double(actual), (double)(expected), (double)(tol), __FILE__,        \
+			__LINE__, #actual)
 
 /* The suites, one per file. */
 void suite_sphere(void);

@@ -5,23 +5,24 @@
 #include <stdio.h>
 
 #include "shape.h"
+#include "support.h"
 #include "test.h"
 
 typedef struct {
 	const char *id;
-	real base[3], apex[3];
-	real base_radius, apex_radius;
+	case_real base[3], apex[3];
+	case_real base_radius, apex_radius;
 	unsigned flags;
-	real o[3], d[3]; /* d is normalised here */
-	real tmin;
+	case_real o[3], d[3]; /* d is normalised here */
+	case_real tmin;
 	int hit;
-	real t;
-	real n[3]; /* expected outward normal, up to length */
+	case_real t;
+	case_real n[3]; /* expected outward normal, up to length */
 } cone_case;
 
 #define TWO OBJ_TWO_SIDED
 #define INSIDE (OBJ_TWO_SIDED | OBJ_INSIDE_ONLY)
-#define SQRT2 REAL_C(1.4142135623730950488)
+#define SQRT2 CASE_C(1.4142135623730950488)
 
 /* Cylinder Y: base (0,0,0), top (0,0,2), r 1. Cone K: r 1 at z = 0 to a tip at z = 2.
  * Cone T: r 1 at z = 0 to a tip at z = 1 (a right angle at the tip). */
@@ -31,52 +32,52 @@ static const cone_case cases[] = {
 	{"Y inside", {0, 0, 0}, {0, 0, 2}, 1, 1, TWO, {0, 0, 1}, {1, 0, 0}, 0, 1, 1, {1, 0, 0}},
 	/* Uncapped: the infinite cylinder's wall above and below the ends is not there. */
 	{"Y above", {0, 0, 0}, {0, 0, 2}, 1, 1, TWO, {-5, 0, 3}, {1, 0, 0}, 0, 0, 0, {0, 0, 0}},
-	{"Y below", {0, 0, 0}, {0, 0, 2}, 1, 1, TWO, {-5, 0, REAL_C(-0.5)}, {1, 0, 0}, 0, 0, 0,
+	{"Y below", {0, 0, 0}, {0, 0, 2}, 1, 1, TWO, {-5, 0, CASE_C(-0.5)}, {1, 0, 0}, 0, 0, 0,
 	 {0, 0, 0}},
 	/* In through the open top (near root behind the origin), out through the wall. */
-	{"Y open top", {0, 0, 0}, {0, 0, 2}, 1, 1, TWO, {0, 0, REAL_C(2.5)}, {1, 0, -1}, 0, 1,
+	{"Y open top", {0, 0, 0}, {0, 0, 2}, 1, 1, TWO, {0, 0, CASE_C(2.5)}, {1, 0, -1}, 0, 1,
 	 SQRT2, {1, 0, 0}},
 	/* In through the wall, out through the open top: only the entry. */
-	{"Y out top", {0, 0, 0}, {0, 0, 2}, 1, 1, TWO, {-2, 0, REAL_C(0.5)}, {1, 0, 1}, 0, 1,
+	{"Y out top", {0, 0, 0}, {0, 0, 2}, 1, 1, TWO, {-2, 0, CASE_C(0.5)}, {1, 0, 1}, 0, 1,
 	 SQRT2, {-1, 0, 0}},
 	/* The near root lies above the top, so the far one (the inside of the wall) counts. */
-	{"Y far root", {0, 0, 0}, {0, 0, 2}, 1, 1, TWO, {-2, 0, REAL_C(3.5)}, {1, 0, -1}, 0, 1,
-	 REAL_C(3.0) * SQRT2, {1, 0, 0}},
+	{"Y far root", {0, 0, 0}, {0, 0, 2}, 1, 1, TWO, {-2, 0, CASE_C(3.5)}, {1, 0, -1}, 0, 1,
+	 CASE_C(3.0) * SQRT2, {1, 0, 0}},
 	/* Past the near root, the far one. */
-	{"Y tmin", {0, 0, 0}, {0, 0, 2}, 1, 1, TWO, {-5, 0, 1}, {1, 0, 0}, REAL_C(4.5), 1, 6,
+	{"Y tmin", {0, 0, 0}, {0, 0, 2}, 1, 1, TWO, {-5, 0, 1}, {1, 0, 0}, CASE_C(4.5), 1, 6,
 	 {1, 0, 0}},
 	/* Parallel to the axis (a = 0, b = 0): on the axis, inside off it, or outside, the
 	 * ray never meets the wall of an uncapped cylinder. */
 	{"Y on axis", {0, 0, 0}, {0, 0, 2}, 1, 1, TWO, {0, 0, -5}, {0, 0, 1}, 0, 0, 0, {0, 0, 0}},
 	{"Y axis from in", {0, 0, 0}, {0, 0, 2}, 1, 1, TWO, {0, 0, 1}, {0, 0, 1}, 0, 0, 0,
 	 {0, 0, 0}},
-	{"Y parallel in", {0, 0, 0}, {0, 0, 2}, 1, 1, TWO, {REAL_C(0.5), 0, -5}, {0, 0, 1}, 0, 0, 0,
+	{"Y parallel in", {0, 0, 0}, {0, 0, 2}, 1, 1, TWO, {CASE_C(0.5), 0, -5}, {0, 0, 1}, 0, 0, 0,
 	 {0, 0, 0}},
 	{"Y parallel out", {0, 0, 0}, {0, 0, 2}, 1, 1, TWO, {2, 0, -5}, {0, 0, 1}, 0, 0, 0,
 	 {0, 0, 0}},
 	/* A slanted cylinder: base (1,2,3), axis (1,1,0)/sqrt 2, length 4, r 0.5. The ray
 	 * meets the axis point at height 2, (1+sqrt 2, 2+sqrt 2, 3), straight from below. */
 	{"Y slanted", {1, 2, 3},
-	 {REAL_C(1.0) + REAL_C(2.0) * SQRT2, REAL_C(2.0) + REAL_C(2.0) * SQRT2, 3}, REAL_C(0.5),
-	 REAL_C(0.5), TWO, {REAL_C(1.0) + SQRT2, REAL_C(2.0) + SQRT2, -2}, {0, 0, 1}, 0, 1,
-	 REAL_C(4.5), {0, 0, -1}},
+	 {CASE_C(1.0) + CASE_C(2.0) * SQRT2, CASE_C(2.0) + CASE_C(2.0) * SQRT2, 3}, CASE_C(0.5),
+	 CASE_C(0.5), TWO, {CASE_C(1.0) + SQRT2, CASE_C(2.0) + SQRT2, -2}, {0, 0, 1}, 0, 1,
+	 CASE_C(4.5), {0, 0, -1}},
 
 	/* Cone K: at z = 1 the radius is 0.5; outward normal (-1, 0, 1/2). */
-	{"K side", {0, 0, 0}, {0, 0, 2}, 1, 0, TWO, {-5, 0, 1}, {1, 0, 0}, 0, 1, REAL_C(4.5),
+	{"K side", {0, 0, 0}, {0, 0, 2}, 1, 0, TWO, {-5, 0, 1}, {1, 0, 0}, 0, 1, CASE_C(4.5),
 	 {-2, 0, 1}},
 	/* The quadric is a double cone: its upper nappe above the tip and its lower part
 	 * below the base are not the cone. */
-	{"T above tip", {0, 0, 0}, {0, 0, 1}, 1, 0, TWO, {-5, 0, REAL_C(1.5)}, {1, 0, 0}, 0, 0, 0,
+	{"T above tip", {0, 0, 0}, {0, 0, 1}, 1, 0, TWO, {-5, 0, CASE_C(1.5)}, {1, 0, 0}, 0, 0, 0,
 	 {0, 0, 0}},
-	{"T below base", {0, 0, 0}, {0, 0, 1}, 1, 0, TWO, {-5, 0, REAL_C(-0.5)}, {1, 0, 0}, 0, 0,
+	{"T below base", {0, 0, 0}, {0, 0, 1}, 1, 0, TWO, {-5, 0, CASE_C(-0.5)}, {1, 0, 0}, 0, 0,
 	 0, {0, 0, 0}},
 	/* Parallel to a side line (a = 0, the linear case): one root, in through the open
 	 * base, out through the far wall at (-0.25, 0, 0.75). */
-	{"T parallel side", {0, 0, 0}, {0, 0, 1}, 1, 0, TWO, {1, 0, REAL_C(-0.5)}, {-1, 0, 1}, 0, 1,
-	 REAL_C(1.25) * SQRT2, {-1, 0, 1}},
+	{"T parallel side", {0, 0, 0}, {0, 0, 1}, 1, 0, TWO, {1, 0, CASE_C(-0.5)}, {-1, 0, 1}, 0, 1,
+	 CASE_C(1.25) * SQRT2, {-1, 0, 1}},
 	/* Parallel to the axis inside: the upper nappe's root (z = 1.5) is cut off. */
-	{"T parallel axis", {0, 0, 0}, {0, 0, 1}, 1, 0, TWO, {REAL_C(0.5), 0, -5}, {0, 0, 1}, 0, 1,
-	 REAL_C(5.5), {1, 0, 1}},
+	{"T parallel axis", {0, 0, 0}, {0, 0, 1}, 1, 0, TWO, {CASE_C(0.5), 0, -5}, {0, 0, 1}, 0, 1,
+	 CASE_C(5.5), {1, 0, 1}},
 	/* Along the axis, or across it, through the tip: the ray touches the cone at one
 	 * point, where the side has no normal. A touch is a hit (as a sphere's tangent,
 	 * S05), with the axis out of the tip as its unit normal. */
@@ -87,11 +88,11 @@ static const cone_case cases[] = {
 	{"T tip across", {0, 0, 0}, {0, 0, 1}, 1, 0, TWO, {-5, 0, 1}, {1, 0, 0}, 0, 1, 5,
 	 {0, 0, 1}},
 	/* A frustum, r 1 at z = 0 to r 0.5 at z = 1: at z = 0.5 the radius is 0.75. */
-	{"frustum", {0, 0, 0}, {0, 0, 1}, 1, REAL_C(0.5), TWO, {-5, 0, REAL_C(0.5)}, {1, 0, 0}, 0,
-	 1, REAL_C(4.25), {-2, 0, 1}},
+	{"frustum", {0, 0, 0}, {0, 0, 1}, 1, CASE_C(0.5), TWO, {-5, 0, CASE_C(0.5)}, {1, 0, 0}, 0,
+	 1, CASE_C(4.25), {-2, 0, 1}},
 	/* Widening upward, tip at the base: the normal points down and out. */
-	{"inverted", {0, 0, 0}, {0, 0, 1}, 0, 1, TWO, {-5, 0, REAL_C(0.5)}, {1, 0, 0}, 0, 1,
-	 REAL_C(4.5), {-1, 0, -1}},
+	{"inverted", {0, 0, 0}, {0, 0, 1}, 0, 1, TWO, {-5, 0, CASE_C(0.5)}, {1, 0, 0}, 0, 1,
+	 CASE_C(4.5), {-1, 0, -1}},
 	{"inverted tip", {0, 0, 0}, {0, 0, 1}, 0, 1, TWO, {0, 0, -5}, {0, 0, 1}, 0, 1, 5,
 	 {0, 0, -1}},
 
@@ -101,17 +102,42 @@ static const cone_case cases[] = {
 	{"Y inside-only in", {0, 0, 0}, {0, 0, 2}, 1, 1, INSIDE, {0, 0, 1}, {1, 0, 0}, 0, 1, 1,
 	 {1, 0, 0}},
 	/* In through the wall's outside and out through the open top: nothing visible. */
-	{"Y inside-only top", {0, 0, 0}, {0, 0, 2}, 1, 1, INSIDE, {-2, 0, REAL_C(0.5)}, {1, 0, 1},
+	{"Y inside-only top", {0, 0, 0}, {0, 0, 2}, 1, 1, INSIDE, {-2, 0, CASE_C(0.5)}, {1, 0, 1},
 	 0, 0, 0, {0, 0, 0}},
 	{"K inside-only", {0, 0, 0}, {0, 0, 2}, 1, 0, INSIDE, {-5, 0, 1}, {1, 0, 0}, 0, 1,
-	 REAL_C(5.5), {2, 0, 1}},
+	 CASE_C(5.5), {2, 0, 1}},
 };
 
-static object make_cone(const cone_case *k)
+/* The largest coordinate of a case's scene (ray origin, base and apex, with a radius
+ * beyond them): what the parser would scale it by in fixed point. */
+static double case_extent(const cone_case *k)
+{
+	double e = 0.0, r = (double)k->base_radius > (double)k->apex_radius
+				    ? (double)k->base_radius
+				    : (double)k->apex_radius;
+	int i;
+	for (i = 0; i < 3; i++) {
+		double v[3];
+		v[0] = fabs((double)k->o[i]);
+		v[1] = fabs((double)k->base[i]) + r;
+		v[2] = fabs((double)k->apex[i]) + r;
+		e = v[0] > e ? v[0] : e;
+		e = v[1] > e ? v[1] : e;
+		e = v[2] > e ? v[2] : e;
+	}
+	return e;
+}
+
+static vec3 scaled(const case_real v[3], int shift)
+{
+	return vec_make(CASE_REAL(v[0], shift), CASE_REAL(v[1], shift), CASE_REAL(v[2], shift));
+}
+
+static object make_cone(const cone_case *k, int shift)
 {
 	object o;
-	vec3 base = vec_make(k->base[0], k->base[1], k->base[2]);
-	vec3 axis = vec_sub(vec_make(k->apex[0], k->apex[1], k->apex[2]), base);
+	vec3 base = scaled(k->base, shift);
+	vec3 axis = vec_sub(scaled(k->apex, shift), base);
 	real length = vec_length(axis);
 	/* As the parser stores it. */
 	o.kind = SHAPE_CONE;
@@ -121,15 +147,26 @@ static object make_cone(const cone_case *k)
 	o.u.cone.base = base;
 	o.u.cone.axis = vec_scale(axis, real_div(REAL_C(1.0), length));
 	o.u.cone.length = length;
-	o.u.cone.base_radius = k->base_radius;
-	o.u.cone.apex_radius = k->apex_radius;
-	o.u.cone.slope = real_div(k->apex_radius - k->base_radius, length);
+	o.u.cone.base_radius = CASE_REAL(k->base_radius, shift);
+	o.u.cone.apex_radius = CASE_REAL(k->apex_radius, shift);
+	o.u.cone.slope = real_div(o.u.cone.apex_radius - o.u.cone.base_radius, length);
 	return o;
 }
 
+/* Tolerances: t and the hit point at the case's scale (Q16.16: 2^9 for most cases, 2^8
+ * for the slanted cylinder), the normal as a unit vector. In Q16.16 t is good to 2^-16
+ * of t (the rounded direction's length, real.h) and 2 LSB; the point is o + t d to 2
+ * LSB, and the normal to an LSB. */
+#define T_TOL(t) TOL3(2e-6, 1e-12, ((t) + 2.0) * LSB)
+#define P_TOL TOL3(2e-6, 1e-12, 2 * LSB)
+#define N_TOL TOL3(1e-6, 1e-12, 1 * LSB)
+
 static void run_case(const cone_case *k)
 {
-	object o = make_cone(k);
+	/* Fixed point: the case as the parser would scale it; floating point: shift 0. */
+	int shift = test_shift(case_extent(k));
+	double scale = test_scale(shift);
+	object o = make_cone(k, shift);
 	ray r;
 	hit h;
 	char what[64];
@@ -137,49 +174,51 @@ static void run_case(const cone_case *k)
 	double len = sqrt(nx * nx + ny * ny + nz * nz);
 	int got;
 
-	r.origin = vec_make(k->o[0], k->o[1], k->o[2]);
-	r.dir = vec_normalize(vec_make(k->d[0], k->d[1], k->d[2]));
-	got = cone_intersect(&o, &r, k->tmin, REAL_MAX, &h);
+	r.origin = scaled(k->o, shift);
+	r.dir = vec_normalize(scaled(k->d, 0));
+	got = cone_intersect(&o, &r, CASE_REAL(k->tmin, shift), REAL_MAX, &h);
 	snprintf(what, sizeof what, "%s: %s", k->id, k->hit ? "expected a hit" : "expected a miss");
 	if (!test_check(got == k->hit, __FILE__, __LINE__, what))
 		return;
 	snprintf(what, sizeof what, "%s: same answer without a hit record", k->id);
-	test_check(cone_intersect(&o, &r, k->tmin, REAL_MAX, NULL) == got, __FILE__, __LINE__,
-		   what);
+	test_check(cone_intersect(&o, &r, CASE_REAL(k->tmin, shift), REAL_MAX, NULL) == got,
+		   __FILE__, __LINE__, what);
 	if (!got)
 		return;
 	snprintf(what, sizeof what, "%s t", k->id);
-	test_check_near((double)h.t, (double)k->t, TOL(2e-6, 1e-12), __FILE__, __LINE__, what);
+	test_check_near(test_double(h.t), (double)k->t * scale, T_TOL((double)k->t * scale),
+			__FILE__, __LINE__, what);
 	/* The point is on the ray at t. */
 	snprintf(what, sizeof what, "%s point.z", k->id);
-	test_check_near((double)h.point.z, (double)k->o[2] + (double)h.t * (double)r.dir.z,
-			TOL(2e-6, 1e-12), __FILE__, __LINE__, what);
+	test_check_near(test_double(h.point.z),
+			test_double(r.origin.z) + test_double(h.t) * test_double(r.dir.z), P_TOL,
+			__FILE__, __LINE__, what);
 	snprintf(what, sizeof what, "%s normal.x", k->id);
-	test_check_near((double)h.normal.x, nx / len, TOL(1e-6, 1e-12), __FILE__, __LINE__, what);
+	test_check_near(test_double(h.normal.x), nx / len, N_TOL, __FILE__, __LINE__, what);
 	snprintf(what, sizeof what, "%s normal.y", k->id);
-	test_check_near((double)h.normal.y, ny / len, TOL(1e-6, 1e-12), __FILE__, __LINE__, what);
+	test_check_near(test_double(h.normal.y), ny / len, N_TOL, __FILE__, __LINE__, what);
 	snprintf(what, sizeof what, "%s normal.z", k->id);
-	test_check_near((double)h.normal.z, nz / len, TOL(1e-6, 1e-12), __FILE__, __LINE__, what);
+	test_check_near(test_double(h.normal.z), nz / len, N_TOL, __FILE__, __LINE__, what);
 	snprintf(what, sizeof what, "%s: shading normal = normal", k->id);
 	test_check(h.shading.x == h.normal.x && h.shading.y == h.normal.y &&
 		   h.shading.z == h.normal.z, __FILE__, __LINE__, what);
 }
 
-/* The interval: a hit at t = 4 is outside (0, 3.9). */
+/* The interval: a hit at t = 4 is outside (0, 3.9). Exact values, at scale 1. */
 static void test_interval(void)
 {
-	object o = make_cone(&cases[0]);
+	object o = make_cone(&cases[0], 0);
 	ray r;
 	hit h;
-	r.origin = vec_make(-5, 0, 1);
-	r.dir = vec_make(1, 0, 0);
-	CHECK(!cone_intersect(&o, &r, 0, REAL_C(3.9), &h));
-	CHECK(cone_intersect(&o, &r, 0, REAL_C(4.1), &h));
+	r.origin = vec_make(REAL_C(-5.0), REAL_C(0.0), REAL_C(1.0));
+	r.dir = vec_make(REAL_C(1.0), REAL_C(0.0), REAL_C(0.0));
+	CHECK(!cone_intersect(&o, &r, REAL_C(0.0), REAL_C(3.9), &h));
+	CHECK(cone_intersect(&o, &r, REAL_C(0.0), REAL_C(4.1), &h));
 	/* Only the far root inside (4.5, 5.9) would do, and it is at 6. */
 	CHECK(!cone_intersect(&o, &r, REAL_C(4.5), REAL_C(5.9), &h));
 	/* Behind the origin: nothing. */
-	r.dir = vec_make(-1, 0, 0);
-	CHECK(!cone_intersect(&o, &r, 0, REAL_MAX, &h));
+	r.dir = vec_make(REAL_C(-1.0), REAL_C(0.0), REAL_C(0.0));
+	CHECK(!cone_intersect(&o, &r, REAL_C(0.0), REAL_MAX, &h));
 }
 
 void suite_cone(void)

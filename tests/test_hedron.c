@@ -17,6 +17,10 @@ typedef struct {
 	double move[3];
 } frame;
 
+/* Lengths are scaled by 2^world_shift before they are rounded to real: in fixed point
+ * the scale the parser would give the scene, 0 in floating point. */
+static int world_shift;
+
 /* The cube |x|, |y|, |z| <= 1 placed by f, as the six half-spaces n.x <= offset in
  * s.planes[0..6). Built in double, then rounded to real once, as a parser would. */
 static void set_cube(const frame *f)
@@ -33,8 +37,8 @@ static void set_cube(const frame *f)
 				offset += n[k] * f->move[k];
 			}
 			s.planes[s.plane_count].normal =
-				vec_make((real)n[0], (real)n[1], (real)n[2]);
-			s.planes[s.plane_count].offset = (real)offset;
+				vec_make(test_real(n[0]), test_real(n[1]), test_real(n[2]));
+			s.planes[s.plane_count].offset = test_real(ldexp(offset, world_shift));
 			s.plane_count++;
 		}
 }
@@ -59,53 +63,80 @@ enum { MISS, HIT, EITHER };
 
 typedef struct {
 	const char *id;
-	real o[3], d[3];
-	real tmin;
+	case_real o[3], d[3];
+	case_real tmin;
 	int expect;  /* MISS, HIT, or EITHER (degenerate: no NaN, and a hit must be right) */
-	real t;
-	double tol;
+	case_real t;
+	double tol;  /* on t (fixed point: at the case's scale) */
 	int normal;  /* NORMAL_* */
-	real n[3];
+	case_real n[3];
 } hedron_case;
 
 static const hedron_case cases[] = {
 	{"P01", {0, 0, -5}, {0, 0, 1}, 0, HIT, 4, 0, NORMAL_EXACT, {0, 0, -1}},
 	/* Parallel to the y slab and outside it: vd = 0, vn > 0. */
 	{"P02", {0, 2, -5}, {0, 0, 1}, 0, MISS, 0, 0, NORMAL_ANY, {0, 0, 0}},
-	{"P03", {0, REAL_C(0.5), -5}, {0, 0, 1}, 0, HIT, 4, 0, NORMAL_EXACT, {0, 0, -1}},
+	{"P03", {0, CASE_C(0.5), -5}, {0, 0, 1}, 0, HIT, 4, 0, NORMAL_EXACT, {0, 0, -1}},
 	/* The ray lies in the plane y = 1: either answer, but no NaN. */
 	{"P04", {0, 1, -5}, {0, 0, 1}, 0, EITHER, 4, 0, NORMAL_EXACT, {0, 0, -1}},
 	/* Through the edge x = y = 1: the per-face test leaks here. The ray enters the
-	 * +x and +y faces at once; either is the entry face. */
-	{"P05", {3, 3, REAL_C(0.25)}, {-1, -1, 0}, 0, HIT, REAL_C(2.8284271247461903),
-	 TOL(1e-6, 1e-12), NORMAL_PLUS_X_OR_Y, {0, 0, 0}},
-	/* Through the vertex (1, 1, 1); the catalog's tolerance is 1e-12, float's 4 ulp. */
-	{"P06", {3, 3, 3}, {-1, -1, -1}, 0, HIT, REAL_C(3.46410161513775459), TOL(1e-6, 1e-12),
+	 * +x and +y faces at once; either is the entry face. Q16.16 (scale 2^10): t is
+	 * good to 2^-16 of t (2896 LSB), the rounded direction's length (real.h). */
+	{"P05", {3, 3, CASE_C(0.25)}, {-1, -1, 0}, 0, HIT, CASE_C(2.8284271247461903),
+	 TOL3(1e-6, 1e-12, 2900 * LSB), NORMAL_PLUS_X_OR_Y, {0, 0, 0}},
+	/* Through the vertex (1, 1, 1); the catalog's tolerance is 1e-12, float's 4 ulp,
+	 * Q16.16's 2^-16 of t (3547 LSB at scale 2^10). */
+	{"P06", {3, 3, 3}, {-1, -1, -1}, 0, HIT, CASE_C(3.46410161513775459),
+	 TOL3(1e-6, 1e-12, 3550 * LSB),
 	 NORMAL_ANY, {0, 0, 0}},
 	/* Along the edge line x = y = 1: degenerate, Haines keeps it (both slabs touch). */
 	{"P07", {1, 1, -5}, {0, 0, 1}, 0, HIT, 4, 0, NORMAL_EXACT, {0, 0, -1}},
 	/* 1.4e-4 outside the edge x = -1, y = 1. */
-	{"P08", {REAL_C(-2.0) + REAL_C(1e-4), REAL_C(4.0) + REAL_C(1e-4), REAL_C(0.25)},
+	{"P08", {CASE_C(-2.0) + CASE_C(1e-4), CASE_C(4.0) + CASE_C(1e-4), CASE_C(0.25)},
 	 {1, -1, 0}, 0, MISS, 0, 0, NORMAL_ANY, {0, 0, 0}},
 	/* From inside: the exit. */
 	{"P09", {0, 0, 0}, {0, 0, 1}, 0, HIT, 1, 0, NORMAL_EXACT, {0, 0, 1}},
 	/* On a face, leaving: the published code returns a t = 0 self-hit. */
-	{"P10", {0, 0, 1}, {0, 0, 1}, REAL_C(1e-9), MISS, 0, 0, NORMAL_ANY, {0, 0, 0}},
+	{"P10", {0, 0, 1}, {0, 0, 1}, CASE_C(1e-9), MISS, 0, 0, NORMAL_ANY, {0, 0, 0}},
 	/* On a face, entering: not the face it starts on, but the far one at t = 2. */
-	{"P11", {0, 0, 1}, {0, 0, -1}, REAL_C(1e-9), HIT, 2, 0, NORMAL_EXACT, {0, 0, -1}},
+	{"P11", {0, 0, 1}, {0, 0, -1}, CASE_C(1e-9), HIT, 2, 0, NORMAL_EXACT, {0, 0, -1}},
 	/* P05 moved by less than an ulp (or, in long double, by 1e-17 outward in y, which
-	 * still enters at t = 2 sqrt 2 + 1e-17): the same answer. */
-	{"P12", {3, REAL_C(3.0) + REAL_C(1e-17), REAL_C(0.25)}, {-1, -1, 0}, 0, HIT,
-	 REAL_C(2.8284271247461903), TOL(1e-6, 1e-12), NORMAL_PLUS_X_OR_Y, {0, 0, 0}},
+	 * still enters at t = 2 sqrt 2 + 1e-17): the same answer. In Q16.16 1e-17 is no
+	 * move at all: P05 exactly. */
+	{"P12", {3, CASE_C(3.0) + CASE_C(1e-17), CASE_C(0.25)}, {-1, -1, 0}, 0, HIT,
+	 CASE_C(2.8284271247461903), TOL3(1e-6, 1e-12, 2900 * LSB), NORMAL_PLUS_X_OR_Y, {0, 0, 0}},
 };
+
+/* The largest coordinate of a case's scene (the ray's origin and the cube). */
+static double case_extent(const hedron_case *k)
+{
+	double e = 1.0;
+	int i;
+	for (i = 0; i < 3; i++)
+		e = fabs((double)k->o[i]) > e ? fabs((double)k->o[i]) : e;
+	return e;
+}
 
 static void run_case(const object *o, const hedron_case *k)
 {
-	ray r = test_ray(vec_make(k->o[0], k->o[1], k->o[2]), vec_make(k->d[0], k->d[1], k->d[2]));
+	/* Fixed point: the case as the parser would scale it (2^9 here), with the cube
+	 * scaled alike; floating point: shift 0. */
+	int shift = test_shift(case_extent(k));
+	ray r = test_ray(vec_make(CASE_REAL(k->o[0], shift), CASE_REAL(k->o[1], shift),
+				  CASE_REAL(k->o[2], shift)),
+			 vec_make(CASE_REAL(k->d[0], 0), CASE_REAL(k->d[1], 0),
+				  CASE_REAL(k->d[2], 0)));
+	real tmin = CASE_REAL(k->tmin, shift);
 	char what[64];
 	hit h;
-	int got = hedron_intersect(&s, o, &r, k->tmin, REAL_MAX, &h);
+	int got;
 
+	/* P10, P11's tmin of 1e-9 is below an LSB at any scale: there it is 1 LSB. */
+	if (REAL_FIXED && k->tmin > 0 && tmin == REAL_C(0.0))
+		tmin = test_real(LSB);
+	world_shift = shift;
+	set_cube(&unit_cube);
+	got = hedron_intersect(&s, o, &r, tmin, REAL_MAX, &h);
 	if (k->expect != EITHER) {
 		snprintf(what, sizeof what, "%s: %s", k->id,
 			 k->expect == HIT ? "expected a hit" : "expected a miss");
@@ -113,30 +144,38 @@ static void run_case(const object *o, const hedron_case *k)
 			return;
 	}
 	snprintf(what, sizeof what, "%s: same answer without a hit record", k->id);
-	test_check(hedron_intersect(&s, o, &r, k->tmin, REAL_MAX, NULL) == got, __FILE__, __LINE__,
+	test_check(hedron_intersect(&s, o, &r, tmin, REAL_MAX, NULL) == got, __FILE__, __LINE__,
 		   what);
 	if (!got)
 		return;
 	snprintf(what, sizeof what, "%s t", k->id);
-	test_check_near((double)h.t, (double)k->t, k->tol, __FILE__, __LINE__, what);
+	test_check_near(test_double(h.t), (double)k->t * test_scale(shift), k->tol, __FILE__,
+			__LINE__, what);
 	if (k->normal == NORMAL_EXACT) {
 		snprintf(what, sizeof what, "%s: normal (%g, %g, %g)", k->id, (double)k->n[0],
 			 (double)k->n[1], (double)k->n[2]);
-		test_check(h.normal.x == k->n[0] && h.normal.y == k->n[1] && h.normal.z == k->n[2],
+		test_check(h.normal.x == CASE_REAL(k->n[0], 0) &&
+				   h.normal.y == CASE_REAL(k->n[1], 0) &&
+				   h.normal.z == CASE_REAL(k->n[2], 0),
 			   __FILE__, __LINE__, what);
 	} else if (k->normal == NORMAL_PLUS_X_OR_Y) {
 		snprintf(what, sizeof what, "%s: normal +x or +y", k->id);
-		test_check(h.normal.z == 0 && ((h.normal.x == 1 && h.normal.y == 0) ||
-					       (h.normal.x == 0 && h.normal.y == 1)),
+		test_check(h.normal.z == REAL_C(0.0) &&
+				   ((h.normal.x == REAL_C(1.0) && h.normal.y == REAL_C(0.0)) ||
+				    (h.normal.x == REAL_C(0.0) && h.normal.y == REAL_C(1.0))),
 			   __FILE__, __LINE__, what);
 	}
 }
 
 /* P13: a zero direction must be rejected where rays are made; normalising it gives NaN
- * (rt's vec_normalize keeps it zero). Either way the polyhedron must answer "miss". */
+ * (rt's vec_normalize keeps it zero). Either way the polyhedron must answer "miss".
+ * Q16.16 has no NaN: there only the zero direction is checked. */
 static void test_bad_direction(const object *o)
 {
 	ray r;
+	world_shift = 0;
+	set_cube(&unit_cube);
+#if !REAL_FIXED
 	r.dir = vec_make(REAL_C(NAN), REAL_C(NAN), REAL_C(NAN));
 	r.origin = vec_make(0, 0, -5);
 	CHECK(!hedron_intersect(&s, o, &r, 0, REAL_MAX, NULL));
@@ -145,10 +184,12 @@ static void test_bad_direction(const object *o)
 	/* One NaN component is enough to poison every plane it meets. */
 	r.dir = vec_make(REAL_C(NAN), 0, 1);
 	CHECK(!hedron_intersect(&s, o, &r, 0, REAL_MAX, NULL));
-	r.dir = vec_normalize(vec_make(0, 0, 0));
-	CHECK(!hedron_intersect(&s, o, &r, 0, REAL_MAX, NULL));
-	r.origin = vec_make(0, 0, -5);
-	CHECK(!hedron_intersect(&s, o, &r, 0, REAL_MAX, NULL));
+#endif
+	r.origin = vec_make(REAL_C(0.0), REAL_C(0.0), REAL_C(0.0));
+	r.dir = vec_normalize(vec_make(REAL_C(0.0), REAL_C(0.0), REAL_C(0.0)));
+	CHECK(!hedron_intersect(&s, o, &r, REAL_C(0.0), REAL_MAX, NULL));
+	r.origin = vec_make(REAL_C(0.0), REAL_C(0.0), REAL_C(-5.0));
+	CHECK(!hedron_intersect(&s, o, &r, REAL_C(0.0), REAL_MAX, NULL));
 }
 
 /* ---- watertightness ------------------------------------------------------------ */
@@ -182,7 +223,16 @@ static void normalize3(double v[3])
 	v[2] /= len;
 }
 
-static vec3 to_vec(const double v[3]) { return vec_make((real)v[0], (real)v[1], (real)v[2]); }
+/* A point, times 2^world_shift, or a direction, as real. */
+static vec3 to_point(const double v[3])
+{
+	return vec_make(test_real(ldexp(v[0], world_shift)), test_real(ldexp(v[1], world_shift)),
+			test_real(ldexp(v[2], world_shift)));
+}
+static vec3 to_vec(const double v[3])
+{
+	return vec_make(test_real(v[0]), test_real(v[1]), test_real(v[2]));
+}
 
 /* A ray whose origin lies `back` before the world point p along the unit direction dir. */
 static ray ray_through(const double p[3], const double dir[3], double back)
@@ -191,7 +241,7 @@ static ray ray_through(const double p[3], const double dir[3], double back)
 	int i;
 	for (i = 0; i < 3; i++)
 		o[i] = p[i] - back * dir[i];
-	return test_ray(to_vec(o), to_vec(dir));
+	return test_ray(to_point(o), to_vec(dir));
 }
 
 /* A point on a cube edge (vertex = 0) or a vertex (vertex = 1), in cube coordinates,
@@ -206,6 +256,12 @@ static void pick_boundary_point(int vertex, double local[3], double signs[3], in
 	}
 }
 
+/* Where an entry point may be off, at the test's scale. Q16.16: its directions are good
+ * to 2^-17 (float's to 2^-24), and a grazing entry multiplies that by t over the sine
+ * of its angle to the face; over these seeded rays (t up to 10) measured up to 2.1e-3. */
+#define POINT_TOL TOL3(1e-3, 1e-9, 5e-3 * scale)
+#define FACE_TOL TOL3(1e-6, 1e-6, LSB)
+
 /* Rays through edges and vertices into the interior must all hit (0 leaks), enter on a
  * face that meets there, at that point; rays passing 1e-3 outside must all miss. */
 static void watertight(const char *name, const frame *f)
@@ -213,8 +269,13 @@ static void watertight(const char *name, const frame *f)
 	enum { RAYS = 20000 };
 	object o = cube_object();
 	int leaks = 0, wrong_face = 0, wrong_point = 0, false_hits = 0, vertex, n;
+	double scale;
 	char what[96];
 
+	/* Fixed point: the scale the parser would give the cube and the ray origins (up to
+	 * 10 away); 0 in floating point. Hit points are compared at that scale. */
+	world_shift = test_shift(fabs(f->move[0]) + fabs(f->move[1]) + fabs(f->move[2]) + 12.0);
+	scale = test_scale(world_shift);
 	set_cube(f);
 	for (vertex = 0; vertex < 2; vertex++) {
 		for (n = 0; n < RAYS; n++) {
@@ -243,16 +304,17 @@ static void watertight(const char *name, const frame *f)
 					continue;
 				ln[i] = signs[i];
 				to_world(f, ln, face, 0);
-				if (fabs((double)h.normal.x - face[0]) < 1e-6 &&
-				    fabs((double)h.normal.y - face[1]) < 1e-6 &&
-				    fabs((double)h.normal.z - face[2]) < 1e-6)
+				/* Q16.16: the plane normals are rounded to half an LSB. */
+				if (fabs(test_double(h.normal.x) - face[0]) < FACE_TOL &&
+				    fabs(test_double(h.normal.y) - face[1]) < FACE_TOL &&
+				    fabs(test_double(h.normal.z) - face[2]) < FACE_TOL)
 					face_ok = 1;
 			}
 			wrong_face += !face_ok;
 			/* Where: at p, up to the ray's rounding (grazing entries amplify it). */
-			if (!(fabs((double)h.point.x - p[0]) < TOL(1e-3, 1e-9) &&
-			      fabs((double)h.point.y - p[1]) < TOL(1e-3, 1e-9) &&
-			      fabs((double)h.point.z - p[2]) < TOL(1e-3, 1e-9)))
+			if (!(fabs(test_double(h.point.x) - p[0] * scale) < POINT_TOL &&
+			      fabs(test_double(h.point.y) - p[1] * scale) < POINT_TOL &&
+			      fabs(test_double(h.point.z) - p[2] * scale) < POINT_TOL))
 				wrong_point++;
 		}
 		/* 1e-3 outside the edge or vertex, in the plane through it that separates it

@@ -27,7 +27,7 @@ static int add_xy(const real *xy, int count)
 {
 	int first = s.vertex_count, i;
 	for (i = 0; i < count; i++)
-		add_vertex(vec_make(xy[2 * i], xy[2 * i + 1], 0), 2);
+		add_vertex(vec_make(xy[2 * i], xy[2 * i + 1], REAL_C(0)), 2);
 	return first;
 }
 
@@ -50,7 +50,7 @@ static object polygon_object(int first, int count, vec3 normal, real offset, int
 /* A polygon in z = 0 facing +z (dropping z projects it to (x, y)). */
 static object xy_polygon(const real *xy, int count, unsigned flags)
 {
-	return polygon_object(add_xy(xy, count), count, vec_make(0, 0, 1), 0, 2, flags);
+	return polygon_object(add_xy(xy, count), count, VEC_C(0, 0, 1), 0, 2, flags);
 }
 
 static int contains(const object *o, real x, real y)
@@ -58,21 +58,25 @@ static int contains(const object *o, real x, real y)
 	return polygon_contains(s.vertices + o->u.polygon.first, o->u.polygon.count, 2, x, y);
 }
 
-static const real unit_square[] = {0, 0, 1, 0, 1, 1, 0, 1};
+static const real unit_square[] = {REAL_C(0), REAL_C(0), REAL_C(1), REAL_C(0),
+				   REAL_C(1), REAL_C(1), REAL_C(0), REAL_C(1)};
 
 /* G01, G02, G06: inside, and the half-open rule on the boundary: right and top edges
  * (and their corner) belong to the square, left and bottom ones do not. */
 static void test_square(void)
 {
-	static const real repeated[] = {0, 0, 1, 0, 1, 0, 1, 1, 0, 1};
+	static const real repeated[] = {REAL_C(0), REAL_C(0), REAL_C(1), REAL_C(0), REAL_C(1),
+					REAL_C(0), REAL_C(1), REAL_C(1), REAL_C(0), REAL_C(1)};
 	static const struct {
 		real x, y;
 		int inside;
 	} points[] = {
-		{REAL_C(0.5), REAL_C(0.5), 1}, {1, REAL_C(0.5), 1},           {REAL_C(0.5), 1, 1},
-		{1, 1, 1},                     {0, 0, 0},                     {1, 0, 0},
-		{0, 1, 0},                     {REAL_C(0.5), 0, 0},           {0, REAL_C(0.5), 0},
-		{REAL_C(1.5), REAL_C(0.5), 0}, {REAL_C(-0.5), REAL_C(0.5), 0}, {REAL_C(0.5), 2, 0},
+		{REAL_C(0.5), REAL_C(0.5), 1},  {REAL_C(1.0), REAL_C(0.5), 1},
+		{REAL_C(0.5), REAL_C(1.0), 1},  {REAL_C(1.0), REAL_C(1.0), 1},
+		{REAL_C(0.0), REAL_C(0.0), 0},  {REAL_C(1.0), REAL_C(0.0), 0},
+		{REAL_C(0.0), REAL_C(1.0), 0},  {REAL_C(0.5), REAL_C(0.0), 0},
+		{REAL_C(0.0), REAL_C(0.5), 0},  {REAL_C(1.5), REAL_C(0.5), 0},
+		{REAL_C(-0.5), REAL_C(0.5), 0}, {REAL_C(0.5), REAL_C(2.0), 0},
 	};
 	object square, twice;
 	ray r;
@@ -85,36 +89,37 @@ static void test_square(void)
 	/* G06: a repeated vertex is a zero-length edge and changes nothing. */
 	twice = xy_polygon(repeated, 5, 0);
 	for (i = 0; i < sizeof points / sizeof points[0]; i++) {
-		snprintf(what, sizeof what, "G02: (%g, %g) %s", (double)points[i].x,
-			 (double)points[i].y, points[i].inside ? "inside" : "outside");
+		snprintf(what, sizeof what, "G02: (%g, %g) %s", test_double(points[i].x),
+			 test_double(points[i].y), points[i].inside ? "inside" : "outside");
 		test_check(contains(&square, points[i].x, points[i].y) == points[i].inside,
 			   __FILE__, __LINE__, what);
-		snprintf(what, sizeof what, "G06: (%g, %g) %s", (double)points[i].x,
-			 (double)points[i].y, points[i].inside ? "inside" : "outside");
+		snprintf(what, sizeof what, "G06: (%g, %g) %s", test_double(points[i].x),
+			 test_double(points[i].y), points[i].inside ? "inside" : "outside");
 		test_check(contains(&twice, points[i].x, points[i].y) == points[i].inside, __FILE__,
 			   __LINE__, what);
 	}
 
 	/* G01 through the ray: O(0.5, 0.5, 1) D(0, 0, -1) hits at t = 1. */
-	r = test_ray(vec_make(REAL_C(0.5), REAL_C(0.5), 1), vec_make(0, 0, -1));
+	r = test_ray(VEC_C(0.5, 0.5, 1), VEC_C(0, 0, -1));
 	CHECK(polygon_intersect(&s, &square, &r, 0, REAL_MAX, &h));
-	CHECK_NEAR(h.t, 1.0, 0.0);
-	CHECK_NEAR(h.point.x, 0.5, 0.0);
-	CHECK_NEAR(h.point.y, 0.5, 0.0);
-	CHECK_NEAR(h.point.z, 0.0, 0.0);
-	CHECK(h.normal.x == 0 && h.normal.y == 0 && h.normal.z == 1);
-	CHECK(h.shading.x == 0 && h.shading.y == 0 && h.shading.z == 1);
+	CHECK_REAL(h.t, 1.0, 0.0);
+	CHECK_REAL(h.point.x, 0.5, 0.0);
+	CHECK_REAL(h.point.y, 0.5, 0.0);
+	CHECK_REAL(h.point.z, 0.0, 0.0);
+	CHECK(h.normal.x == REAL_C(0.0) && h.normal.y == REAL_C(0.0) && h.normal.z == REAL_C(1.0));
+	CHECK(h.shading.x == REAL_C(0.0) && h.shading.y == REAL_C(0.0) &&
+	      h.shading.z == REAL_C(1.0));
 	CHECK(polygon_intersect(&s, &square, &r, 0, REAL_MAX, NULL));
 	CHECK(!polygon_intersect(&s, &square, &r, 0, REAL_C(0.5), &h));
 	CHECK(!polygon_intersect(&s, &square, &r, REAL_C(1.5), REAL_MAX, &h));
 	/* An opaque polygon is one-sided: from behind it is not there; two-sided it is. */
-	r = test_ray(vec_make(REAL_C(0.5), REAL_C(0.5), -1), vec_make(0, 0, 1));
+	r = test_ray(VEC_C(0.5, 0.5, -1), VEC_C(0, 0, 1));
 	CHECK(!polygon_intersect(&s, &square, &r, 0, REAL_MAX, &h));
 	square.flags = OBJ_TWO_SIDED;
 	CHECK(polygon_intersect(&s, &square, &r, 0, REAL_MAX, &h));
-	CHECK_NEAR(h.t, 1.0, 0.0);
+	CHECK_REAL(h.t, 1.0, 0.0);
 	/* Beside the square, the plane is hit but the point is outside. */
-	r = test_ray(vec_make(REAL_C(1.5), REAL_C(0.5), 1), vec_make(0, 0, -1));
+	r = test_ray(VEC_C(1.5, 0.5, 1), VEC_C(0, 0, -1));
 	CHECK(!polygon_intersect(&s, &square, &r, 0, REAL_MAX, &h));
 }
 
@@ -131,9 +136,9 @@ static void test_parallel(void)
 	square = xy_polygon(unit_square, 4, 0);
 	for (flags = 0; flags <= OBJ_TWO_SIDED; flags += OBJ_TWO_SIDED) {
 		square.flags = (unsigned char)flags;
-		r = test_ray(vec_make(REAL_C(0.5), REAL_C(0.5), 1), vec_make(1, 0, 0));
+		r = test_ray(VEC_C(0.5, 0.5, 1), VEC_C(1, 0, 0));
 		CHECK(!polygon_intersect(&s, &square, &r, 0, REAL_MAX, &h));
-		r = test_ray(vec_make(-1, REAL_C(0.5), 0), vec_make(1, 0, 0));
+		r = test_ray(VEC_C(-1, 0.5, 0), VEC_C(1, 0, 0));
 		CHECK(!polygon_intersect(&s, &square, &r, 0, REAL_MAX, &h));
 	}
 }
@@ -141,9 +146,12 @@ static void test_parallel(void)
 /* G03, G04: a point on a shared edge or vertex belongs to exactly one polygon. */
 static void test_shared(void)
 {
-	static const real right[] = {1, 0, 2, 0, 2, 1, 1, 1};
-	static const real top_left[] = {0, 1, 1, 1, 1, 2, 0, 2};
-	static const real top_right[] = {1, 1, 2, 1, 2, 2, 1, 2};
+	static const real right[] = {REAL_C(1), REAL_C(0), REAL_C(2), REAL_C(0),
+				     REAL_C(2), REAL_C(1), REAL_C(1), REAL_C(1)};
+	static const real top_left[] = {REAL_C(0), REAL_C(1), REAL_C(1), REAL_C(1),
+					REAL_C(1), REAL_C(2), REAL_C(0), REAL_C(2)};
+	static const real top_right[] = {REAL_C(1), REAL_C(1), REAL_C(2), REAL_C(1),
+					 REAL_C(2), REAL_C(2), REAL_C(1), REAL_C(2)};
 	object a, b, c, d;
 
 	s.vertex_count = 0;
@@ -152,20 +160,22 @@ static void test_shared(void)
 	c = xy_polygon(top_left, 4, 0);
 	d = xy_polygon(top_right, 4, 0);
 	/* G03: (1, 0.5) is the right edge of a, the left edge of b. */
-	CHECK_INT(contains(&a, 1, REAL_C(0.5)), 1);
-	CHECK_INT(contains(&b, 1, REAL_C(0.5)), 0);
+	CHECK_INT(contains(&a, REAL_C(1.0), REAL_C(0.5)), 1);
+	CHECK_INT(contains(&b, REAL_C(1.0), REAL_C(0.5)), 0);
 	/* G04: (1, 1), the corner of all four, is the top-right corner of a only. */
-	CHECK_INT(contains(&a, 1, 1), 1);
-	CHECK_INT(contains(&b, 1, 1), 0);
-	CHECK_INT(contains(&c, 1, 1), 0);
-	CHECK_INT(contains(&d, 1, 1), 0);
+	CHECK_INT(contains(&a, REAL_C(1.0), REAL_C(1.0)), 1);
+	CHECK_INT(contains(&b, REAL_C(1.0), REAL_C(1.0)), 0);
+	CHECK_INT(contains(&c, REAL_C(1.0), REAL_C(1.0)), 0);
+	CHECK_INT(contains(&d, REAL_C(1.0), REAL_C(1.0)), 0);
 }
 
 /* G09: the L (0,0)(2,0)(2,1)(1,1)(1,2)(0,2) is concave. G10: a pentagram's centre is
  * outside by the even-odd rule (its winding number is 2); its points are inside. */
 static void test_concave(void)
 {
-	static const real ell[] = {0, 0, 2, 0, 2, 1, 1, 1, 1, 2, 0, 2};
+	static const real ell[] = {REAL_C(0), REAL_C(0), REAL_C(2), REAL_C(0),
+				   REAL_C(2), REAL_C(1), REAL_C(1), REAL_C(1),
+				   REAL_C(1), REAL_C(2), REAL_C(0), REAL_C(2)};
 	real star[10];
 	object l, p;
 	int k;
@@ -178,13 +188,13 @@ static void test_concave(void)
 	/* {5/2}: every second vertex of a unit pentagon, starting at the top. */
 	for (k = 0; k < 5; k++) {
 		double angle = 1.5707963267948966 + k * 2.0 * 2.0 * 3.1415926535897932 / 5.0;
-		star[2 * k] = (real)cos(angle);
-		star[2 * k + 1] = (real)sin(angle);
+		star[2 * k] = test_real(cos(angle));
+		star[2 * k + 1] = test_real(sin(angle));
 	}
 	p = xy_polygon(star, 5, 0);
-	CHECK_INT(contains(&p, 0, 0), 0);
-	CHECK_INT(contains(&p, 0, REAL_C(0.9)), 1);
-	CHECK_INT(contains(&p, 0, REAL_C(-0.5)), 0);
+	CHECK_INT(contains(&p, REAL_C(0.0), REAL_C(0.0)), 0);
+	CHECK_INT(contains(&p, REAL_C(0.0), REAL_C(0.9)), 1);
+	CHECK_INT(contains(&p, REAL_C(0.0), REAL_C(-0.5)), 0);
 }
 
 /* ---- G05 through the parser --------------------------------------------------- */
@@ -215,7 +225,7 @@ static void test_collinear(void)
 	/* Only the second, proper triangle is left, with a unit normal. */
 	CHECK_INT(s.object_count, 1);
 	CHECK_INT(zero_area_warnings, 1);
-	CHECK_NEAR(s.objects[0].u.polygon.normal.z, 1.0, 0.0);
+	CHECK_REAL(s.objects[0].u.polygon.normal.z, 1.0, 0.0);
 }
 
 /* ---- G11: random points on shared edges of a grid --------------------------------- */
@@ -329,12 +339,31 @@ static void pick_on_edge(const grid *g, double uv[2])
 	} else {
 		const double(*e)[2] = g->edge[(int)(rnd() * g->edges)];
 		double t = rnd();
+#if REAL_FIXED
+		/* Q16.16: a ray's hit point is off by up to |p| 2^-17 / cos (the plane's rounded
+		 * normal, far from the origin), so a point that close to the end of an edge on
+		 * the grid's border could land outside the grid: points stay 5 % of an edge
+		 * from its ends (interior vertices are picked above). */
+		t = 0.05 + 0.9 * t;
+#endif
 		uv[0] = e[0][0] + t * (e[1][0] - e[0][0]);
 		uv[1] = e[0][1] + t * (e[1][1] - e[0][1]);
 	}
 }
 
-static vec3 place_flat(const double *uv) { return vec_make((real)uv[0], (real)uv[1], 0); }
+/* Lengths are scaled by 2^grid_shift before they are rounded to real: in fixed point the
+ * scale the parser would give the grid's scene, 0 in floating point. */
+static int grid_shift;
+
+static real length(double x)
+{
+	return test_real(ldexp(x, grid_shift));
+}
+
+static vec3 place_flat(const double *uv)
+{
+	return vec_make(length(uv[0]), length(uv[1]), REAL_C(0.0));
+}
 
 /* A tilted plane through (3.7, -2.1, 11.3) spanned by e1, e2; its normal is mostly along
  * x, so the polygons project onto (y, z). */
@@ -353,7 +382,7 @@ static vec3 place_tilted(const double *uv)
 {
 	double p[3];
 	tilt_point(uv, p);
-	return vec_make((real)p[0], (real)p[1], (real)p[2]);
+	return vec_make(length(p[0]), length(p[1]), length(p[2]));
 }
 
 /* G11: every point on a shared edge is inside exactly one polygon of the grid, both in
@@ -368,14 +397,16 @@ static void test_grid(void)
 	int neither = 0, both = 0, n_ray_neither = 0, n_ray_both = 0, wrong_t = 0, k, i;
 
 	lcg_state = 1618033988u;
-	build_grid(&g, place_flat, vec_make(0, 0, 1), 0, 2);
+	/* The flat grid spans 0 .. 8. */
+	grid_shift = test_shift(CELLS + 0.5);
+	build_grid(&g, place_flat, VEC_C(0, 0, 1), 0, 2);
 	for (k = 0; k < POINTS; k++) {
 		double uv[2];
 		int count = 0;
 		real x, y;
 		pick_on_edge(&g, uv);
-		x = (real)uv[0];
-		y = (real)uv[1];
+		x = length(uv[0]);
+		y = length(uv[1]);
 		for (i = 0; i < g.polygons; i++)
 			count += contains(&s.objects[i], x, y);
 		neither += count == 0;
@@ -393,8 +424,10 @@ static void test_grid(void)
 	len = sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
 	for (i = 0; i < 3; i++)
 		normal[i] /= len;
-	n = vec_make((real)normal[0], (real)normal[1], (real)normal[2]);
-	offset = (real)(normal[0] * tilt_origin[0] + normal[1] * tilt_origin[1] +
+	n = vec_make(test_real(normal[0]), test_real(normal[1]), test_real(normal[2]));
+	/* The tilted grid and the rays' origins (up to 20 from it) reach about 40. */
+	grid_shift = test_shift(40.0);
+	offset = length(normal[0] * tilt_origin[0] + normal[1] * tilt_origin[1] +
 			normal[2] * tilt_origin[2]);
 	/* Project along the normal's largest component (x here), as the parser does. */
 	CHECK(fabs(normal[0]) > fabs(normal[1]) && fabs(normal[0]) > fabs(normal[2]));
@@ -416,13 +449,21 @@ static void test_grid(void)
 		} while (len > 1.0 || cosine < 0.2);
 		for (i = 0; i < 3; i++)
 			w[i] /= len;
-		r = test_ray(vec_make((real)(p[0] + back * w[0]), (real)(p[1] + back * w[1]),
-				      (real)(p[2] + back * w[2])),
-			     vec_make((real)-w[0], (real)-w[1], (real)-w[2]));
+		r = test_ray(vec_make(length(p[0] + back * w[0]), length(p[1] + back * w[1]),
+				      length(p[2] + back * w[2])),
+			     vec_make(test_real(-w[0]), test_real(-w[1]), test_real(-w[2])));
 		for (i = 0; i < g.polygons; i++)
 			if (polygon_intersect(&s, &s.objects[i], &r, 0, REAL_MAX, &h)) {
 				count++;
-				if (!(fabs((double)h.t - back) < TOL(1e-4, 1e-10) * back))
+				/* Q16.16 (at the grid's scale): t is good to 2^-16 of t (the
+				 * direction's rounding, real.h), and the plane's rounded normal
+				 * (half an LSB per component: 1.5 LSB of |p|inf) moves it by up
+				 * to 2^-16 1.5 |p|inf over the cosine. */
+				if (!(fabs(test_double(h.t) - back * test_scale(grid_shift)) <
+				      TOL3(1e-4 * back, 1e-10 * back,
+					   (back * test_scale(grid_shift) +
+					    1.5 * test_double(vec_max_abs(h.point)) / cosine +
+					    4.0) * LSB)))
 					wrong_t++;
 			}
 		n_ray_neither += count == 0;
@@ -444,46 +485,50 @@ static void test_other_axes(void)
 	s.vertex_count = 0;
 	/* The unit square in the plane x = 2: (y, z) = (0,0) (1,0) (1,1) (0,1), facing +x. */
 	first = s.vertex_count;
-	add_vertex(vec_make(2, 0, 0), 0);
-	add_vertex(vec_make(2, 1, 0), 0);
-	add_vertex(vec_make(2, 1, 1), 0);
-	add_vertex(vec_make(2, 0, 1), 0);
-	o = polygon_object(first, 4, vec_make(1, 0, 0), 2, 0, 0);
-	r = test_ray(vec_make(5, REAL_C(0.25), REAL_C(0.75)), vec_make(-1, 0, 0));
+	add_vertex(VEC_C(2, 0, 0), 0);
+	add_vertex(VEC_C(2, 1, 0), 0);
+	add_vertex(VEC_C(2, 1, 1), 0);
+	add_vertex(VEC_C(2, 0, 1), 0);
+	o = polygon_object(first, 4, VEC_C(1, 0, 0), REAL_C(2.0), 0, 0);
+	r = test_ray(VEC_C(5, 0.25, 0.75), VEC_C(-1, 0, 0));
 	CHECK(polygon_intersect(&s, &o, &r, 0, REAL_MAX, &h));
-	CHECK_NEAR(h.t, 3.0, 0.0);
-	r = test_ray(vec_make(5, REAL_C(1.25), REAL_C(0.75)), vec_make(-1, 0, 0));
+	CHECK_REAL(h.t, 3.0, 0.0);
+	r = test_ray(VEC_C(5, 1.25, 0.75), VEC_C(-1, 0, 0));
 	CHECK(!polygon_intersect(&s, &o, &r, 0, REAL_MAX, &h));
 
 	/* The same square in the plane y = -3, facing -y. */
 	first = s.vertex_count;
-	add_vertex(vec_make(0, -3, 0), 1);
-	add_vertex(vec_make(0, -3, 1), 1);
-	add_vertex(vec_make(1, -3, 1), 1);
-	add_vertex(vec_make(1, -3, 0), 1);
-	o = polygon_object(first, 4, vec_make(0, -1, 0), 3, 1, 0);
-	r = test_ray(vec_make(REAL_C(0.5), -7, REAL_C(0.5)), vec_make(0, 1, 0));
+	add_vertex(VEC_C(0, -3, 0), 1);
+	add_vertex(VEC_C(0, -3, 1), 1);
+	add_vertex(VEC_C(1, -3, 1), 1);
+	add_vertex(VEC_C(1, -3, 0), 1);
+	o = polygon_object(first, 4, VEC_C(0, -1, 0), REAL_C(3.0), 1, 0);
+	r = test_ray(VEC_C(0.5, -7, 0.5), VEC_C(0, 1, 0));
 	CHECK(polygon_intersect(&s, &o, &r, 0, REAL_MAX, &h));
-	CHECK_NEAR(h.t, 4.0, 0.0);
-	CHECK(h.normal.x == 0 && h.normal.y == -1 && h.normal.z == 0);
+	CHECK_REAL(h.t, 4.0, 0.0);
+	CHECK(h.normal.x == REAL_C(0.0) && h.normal.y == REAL_C(-1.0) && h.normal.z == REAL_C(0.0));
 	/* From behind, one-sided: nothing. */
-	r = test_ray(vec_make(REAL_C(0.5), 1, REAL_C(0.5)), vec_make(0, -1, 0));
+	r = test_ray(VEC_C(0.5, 1, 0.5), VEC_C(0, -1, 0));
 	CHECK(!polygon_intersect(&s, &o, &r, 0, REAL_MAX, &h));
 }
+
+/* Q16.16: the vertex normals are rounded to half an LSB each, and the blend and its
+ * normalisation add a few more. */
+#define NORMAL_TOL TOL3(1e-6, 1e-14, 1 * LSB)
 
 /* Patches: the shading normal is the barycentric blend of the vertex normals of the fan
  * triangle holding the hit; the geometric normal stays the face's. */
 static void check_patch_normal(const object *o, real x, real y, const double expect[3])
 {
-	ray r = test_ray(vec_make(x, y, 1), vec_make(0, 0, -1));
+	ray r = test_ray(vec_make(x, y, REAL_C(1)), VEC_C(0, 0, -1));
 	double len = sqrt(expect[0] * expect[0] + expect[1] * expect[1] + expect[2] * expect[2]);
 	hit h;
 	if (!CHECK(polygon_intersect(&s, o, &r, 0, REAL_MAX, &h)))
 		return;
-	CHECK(h.normal.x == 0 && h.normal.y == 0 && h.normal.z == 1);
-	CHECK_NEAR(h.shading.x, expect[0] / len, TOL(1e-6, 1e-14));
-	CHECK_NEAR(h.shading.y, expect[1] / len, TOL(1e-6, 1e-14));
-	CHECK_NEAR(h.shading.z, expect[2] / len, TOL(1e-6, 1e-14));
+	CHECK(h.normal.x == REAL_C(0.0) && h.normal.y == REAL_C(0.0) && h.normal.z == REAL_C(1.0));
+	CHECK_REAL(h.shading.x, expect[0] / len, NORMAL_TOL);
+	CHECK_REAL(h.shading.y, expect[1] / len, NORMAL_TOL);
+	CHECK_REAL(h.shading.z, expect[2] / len, NORMAL_TOL);
 }
 
 static void test_patch(void)
@@ -499,18 +544,24 @@ static void test_patch(void)
 	tri = xy_polygon(unit_square, 3, OBJ_TWO_SIDED);
 	tri.kind = SHAPE_PATCH;
 	first = tri.u.polygon.first;
-	s.normals[first] = vec_make(0, 0, 1);
-	s.normals[first + 1] = vec_make((real)r2, 0, (real)r2);
-	s.normals[first + 2] = vec_make((real)r3, (real)r3, (real)r3);
+	s.normals[first] = VEC_C(0, 0, 1);
+	s.normals[first + 1] = vec_make(test_real(r2), REAL_C(0), test_real(r2));
+	s.normals[first + 2] = vec_make(test_real(r3), test_real(r3), test_real(r3));
 	/* (0.75, 0.25): weights 0.25, 0.5, 0.25. */
 	e[0] = 0.5 * r2 + 0.25 * r3;
 	e[1] = 0.25 * r3;
 	e[2] = 0.25 + 0.5 * r2 + 0.25 * r3;
 	check_patch_normal(&tri, REAL_C(0.75), REAL_C(0.25), e);
-	/* Near a vertex the blend tends to that vertex's normal. */
+	/* Near a vertex the blend tends to that vertex's normal. (In Q16.16 1e-6 is below an
+	 * LSB: the point is 2 and 4 LSB from the vertex there.) */
 	{
+#if REAL_FIXED
+		real x = REAL_C(1.0) - 2, y = REAL_C(1.0) - 4;
+#else
 		real x = REAL_C(0.999999), y = REAL_C(0.999998);
-		double a = 1.0 - (double)x, b = (double)x - (double)y, c = (double)y;
+#endif
+		double a = 1.0 - test_double(x), b = test_double(x) - test_double(y),
+		       c = test_double(y);
 		e[0] = b * r2 + c * r3;
 		e[1] = c * r3;
 		e[2] = a + b * r2 + c * r3;
@@ -522,10 +573,10 @@ static void test_patch(void)
 	quad = xy_polygon(unit_square, 4, OBJ_TWO_SIDED);
 	quad.kind = SHAPE_PATCH;
 	first = quad.u.polygon.first;
-	s.normals[first] = vec_make(0, 0, 1);
-	s.normals[first + 1] = vec_make((real)r2, 0, (real)r2);
-	s.normals[first + 2] = vec_make((real)r3, (real)r3, (real)r3);
-	s.normals[first + 3] = vec_make(0, (real)r2, (real)r2);
+	s.normals[first] = VEC_C(0, 0, 1);
+	s.normals[first + 1] = vec_make(test_real(r2), REAL_C(0), test_real(r2));
+	s.normals[first + 2] = vec_make(test_real(r3), test_real(r3), test_real(r3));
+	s.normals[first + 3] = vec_make(REAL_C(0), test_real(r2), test_real(r2));
 	/* (0.25, 0.75) is in the second fan triangle, 0.25 v0 + 0.25 v2 + 0.5 v3. */
 	e[0] = 0.25 * r3;
 	e[1] = 0.25 * r3 + 0.5 * r2;

@@ -65,14 +65,48 @@ static void rnd_around(const double n[3], double lo, double hi, double v[3])
 	} while (c < lo || c > hi);
 }
 
-static vec3 to_vec(const double v[3]) { return vec_make((real)v[0], (real)v[1], (real)v[2]); }
+/* Lengths are scaled by 2^world_shift before they are rounded to real: in fixed point the
+ * scale the parser would give each test's scene, 0 in floating point. Expected lengths
+ * and tolerances are at that scale. */
+static int world_shift;
+
+static real length(double x)
+{
+	return test_real(ldexp(x, world_shift));
+}
+
+/* A point (scaled) or a direction (not) as real. */
+static vec3 to_point(const double v[3])
+{
+	return vec_make(length(v[0]), length(v[1]), length(v[2]));
+}
+static vec3 to_vec(const double v[3])
+{
+#if REAL_FIXED
+	/* Q16.16: differences of points (up to 5e5 here) are past its range; scaled to at
+	 * most 1 first (test_ray and spawn normalise directions anyway). */
+	double m = fabs(v[0]) > fabs(v[1]) ? fabs(v[0]) : fabs(v[1]);
+	m = fabs(v[2]) > m ? fabs(v[2]) : m;
+	m = m > 1.0 ? m : 1.0;
+	return vec_make(test_real(v[0] / m), test_real(v[1] / m), test_real(v[2] / m));
+#else
+	return vec_make(test_real(v[0]), test_real(v[1]), test_real(v[2]));
+#endif
+}
 
 static void from_vec(vec3 v, double out[3])
 {
-	out[0] = (double)v.x;
-	out[1] = (double)v.y;
-	out[2] = (double)v.z;
+	out[0] = test_double(v.x);
+	out[1] = test_double(v.y);
+	out[2] = test_double(v.z);
 }
+
+/* A real as long double, for references that add no rounding of their own. */
+#if REAL_FIXED
+#define LD(x) ((long double)test_double(x))
+#else
+#define LD(x) ((long double)(x))
+#endif
 
 /* A ray leaving the hit h on the side `side` (its faced normal, or the opposite), with
  * the tracer's origin offset. */
@@ -104,11 +138,11 @@ static void one_object_scene(void)
  * roots t > 0 (0, 1 or 2) and the smallest in *t. */
 static int sphere_roots(vec3 o, vec3 d, vec3 c, real radius, long double *t)
 {
-	long double fx = (long double)o.x - c.x, fy = (long double)o.y - c.y,
-		    fz = (long double)o.z - c.z;
-	long double a = (long double)d.x * d.x + (long double)d.y * d.y + (long double)d.z * d.z;
-	long double b = fx * d.x + fy * d.y + fz * d.z;
-	long double cc = fx * fx + fy * fy + fz * fz - (long double)radius * radius;
+	long double fx = LD(o.x) - LD(c.x), fy = LD(o.y) - LD(c.y), fz = LD(o.z) - LD(c.z);
+	long double dx = LD(d.x), dy = LD(d.y), dz = LD(d.z);
+	long double a = dx * dx + dy * dy + dz * dz;
+	long double b = fx * dx + fy * dy + fz * dz;
+	long double cc = fx * fx + fy * fy + fz * fz - LD(radius) * LD(radius);
 	long double disc = b * b - a * cc, q, t0, t1;
 	if (disc < 0)
 		return 0;
@@ -136,9 +170,8 @@ static int sphere_roots(vec3 o, vec3 d, vec3 c, real radius, long double *t)
 /* Is o inside the sphere (long double)? */
 static int inside_sphere(vec3 o, vec3 c, real radius)
 {
-	long double fx = (long double)o.x - c.x, fy = (long double)o.y - c.y,
-		    fz = (long double)o.z - c.z;
-	return fx * fx + fy * fy + fz * fz < (long double)radius * radius;
+	long double fx = LD(o.x) - LD(c.x), fy = LD(o.y) - LD(c.y), fz = LD(o.z) - LD(c.z);
+	return fx * fx + fy * fy + fz * fz < LD(radius) * LD(radius);
 }
 
 typedef struct {
@@ -154,18 +187,23 @@ typedef struct {
 static void self_hit_sphere(const sphere_setup *setup)
 {
 	enum { RAYS = 4000 };
-	vec3 c = to_vec(setup->center);
-	real radius = (real)setup->radius;
+	vec3 c;
+	real radius;
 	int n, k, i, no_primary = 0, wrong_side = 0, rehits = 0, far_missed = 0, far_wrong = 0;
 	char what[96];
 
+	/* The scene reaches 4 radii past the centre (the farthest origin). */
+	world_shift = test_shift(fabs(setup->center[0]) + fabs(setup->center[1]) +
+				 fabs(setup->center[2]) + 4.0 * setup->radius);
+	c = to_point(setup->center);
+	radius = length(setup->radius);
 	one_object_scene();
 	s.objects[0].kind = SHAPE_SPHERE;
 	s.objects[0].flags = OBJ_TWO_SIDED;
 	s.objects[0].material = 0;
 	s.objects[0].u.sphere.center = c;
 	s.objects[0].u.sphere.radius = radius;
-	s.objects[0].u.sphere.radius2 = real_mul(radius, radius);
+	s.objects[0].u.sphere.radius2 = real_mul2(radius, radius);
 	for (n = 0; n < RAYS; n++) {
 		double o[3], target[3], d[3], normal[3];
 		ray r;
@@ -190,7 +228,7 @@ static void self_hit_sphere(const sphere_setup *setup)
 		}
 		for (k = 0; k < 3; k++)
 			d[k] = target[k] - o[k];
-		r = test_ray(to_vec(o), to_vec(d));
+		r = test_ray(to_point(o), to_vec(d));
 		if (!scene_intersect(&s, &r, REAL_MAX, &h)) {
 			no_primary++;
 			continue;
@@ -225,7 +263,11 @@ static void self_hit_sphere(const sphere_setup *setup)
 				far_missed++;
 				continue;
 			}
-			if (!(fabs((double)(h2.t - t_exact)) <= TOL(1e-4, 1e-9) * (double)t_exact))
+			/* Q16.16 (at the test's scale; t_exact is the root for the rounded
+			 * origin and direction): t is good to 2^-16 of t (a = |d|^2 is
+			 * rounded, real.h) and a few LSB. */
+			if (!(fabs((double)(LD(h2.t) - t_exact)) <=
+			      TOL3(1e-4, 1e-9, LSB) * (double)t_exact + TOL3(0, 0, 4 * LSB)))
 				far_wrong++;
 		}
 	}
@@ -282,7 +324,7 @@ static int add_cube(const frame *f)
 			local[axis] = side ? -1.0 : 1.0;
 			to_world(f, local, n, 0);
 			s.planes[s.plane_count].normal = to_vec(n);
-			s.planes[s.plane_count].offset = (real)(dot3(n, f->move) + 1.0);
+			s.planes[s.plane_count].offset = length(dot3(n, f->move) + 1.0);
 			s.plane_count++;
 		}
 	memset(o, 0, sizeof *o);
@@ -300,8 +342,8 @@ static long double cube_excess(int first, vec3 p)
 	int i;
 	for (i = 0; i < 6; i++) {
 		const halfspace *pl = &s.planes[first + i];
-		long double e = (long double)pl->normal.x * p.x + (long double)pl->normal.y * p.y +
-				(long double)pl->normal.z * p.z - pl->offset;
+		long double e = LD(pl->normal.x) * LD(p.x) + LD(pl->normal.y) * LD(p.y) +
+				LD(pl->normal.z) * LD(p.z) - LD(pl->offset);
 		worst = e > worst ? e : worst;
 	}
 	return worst;
@@ -315,6 +357,8 @@ static void self_hit_hedron(const char *name, const frame *f)
 	int n, k, no_primary = 0, wrong_side = 0, rehits = 0, far_missed = 0, far_wrong = 0;
 	char what[96];
 
+	/* The cube and the origins (up to 5 from it). */
+	world_shift = test_shift(fabs(f->move[0]) + fabs(f->move[1]) + fabs(f->move[2]) + 7.0);
 	one_object_scene();
 	s.object_count = 0;
 	s.plane_count = 0;
@@ -335,7 +379,8 @@ static void self_hit_hedron(const char *name, const frame *f)
 		rnd_around(normal, 0.2, 1.0, w);
 		for (i = 0; i < 3; i++)
 			o[i] = p[i] + back * w[i];
-		r = test_ray(to_vec(o), vec_make((real)-w[0], (real)-w[1], (real)-w[2]));
+		r = test_ray(to_point(o),
+			     vec_make(test_real(-w[0]), test_real(-w[1]), test_real(-w[2])));
 		if (!scene_intersect(&s, &r, REAL_MAX, &h) || !h.front) {
 			no_primary++;
 			continue;
@@ -371,9 +416,15 @@ static void self_hit_hedron(const char *name, const frame *f)
 			/* The exit face is not the entry face (its outward normal is -h2.normal),
 			 * and the exit lies on the cube's surface, up to the rounding of a point
 			 * of that size, well past the origin. */
-			scale = (long double)real_max(REAL_C(1.0), vec_max_abs(h2.point));
-			if (!(vec_dot(h2.normal, h.normal) > REAL_C(-0.99) && h2.t > REAL_C(0.01) &&
-			      fabsl(cube_excess(0, h2.point)) < TOL(5e-7, 1e-14) * scale))
+			scale = LD(real_max(REAL_C(1.0), vec_max_abs(h2.point)));
+			/* Q16.16 (at the test's scale): the point is o + t d with t good to
+			 * 2^-16 of t, on a face whose rounded normal (half an LSB per
+			 * component) moves it by up to 1.5 LSB of its size. */
+			if (!(vec_dot(h2.normal, h.normal) > REAL_C(-0.99) && h2.t > length(0.01) &&
+			      fabsl(cube_excess(0, h2.point)) <
+				      (long double)TOL3(5e-7, 1e-14, 1.5 * LSB) * scale +
+					      (long double)TOL3(0, 0,
+								(test_double(h2.t) + 4.0) * LSB)))
 				far_wrong++;
 		}
 	}
@@ -408,7 +459,7 @@ static int add_square(const double origin[3], const double e1[3], const double e
 	o->kind = SHAPE_POLYGON;
 	o->flags = (unsigned char)flags;
 	o->u.polygon.normal = to_vec(n);
-	o->u.polygon.offset = (real)dot3(n, origin);
+	o->u.polygon.offset = length(dot3(n, origin));
 	o->u.polygon.axis = fabs(n[0]) > fabs(n[1]) ? (fabs(n[0]) > fabs(n[2]) ? 0 : 2)
 						    : (fabs(n[1]) > fabs(n[2]) ? 1 : 2);
 	o->u.polygon.first = first;
@@ -417,7 +468,7 @@ static int add_square(const double origin[3], const double e1[3], const double e
 		double p[3];
 		for (k = 0; k < 3; k++)
 			p[k] = origin[k] + size * (corner[i][0] * e1[k] + corner[i][1] * e2[k]);
-		s.vertices[first + i] = to_vec(p);
+		s.vertices[first + i] = to_point(p);
 		s.projected[first + i] = polygon_project(s.vertices[first + i], o->u.polygon.axis);
 	}
 	s.vertex_count += 4;
@@ -433,6 +484,8 @@ static void self_hit_polygon(const char *name, const double origin[3], unsigned 
 	int n, k, i, no_primary = 0, wrong_side = 0, rehits = 0;
 	char what[96];
 
+	/* The square and the origins (up to 20 from it). */
+	world_shift = test_shift(fabs(origin[0]) + fabs(origin[1]) + fabs(origin[2]) + 24.0);
 	one_object_scene();
 	s.object_count = 0;
 	s.vertex_count = 0;
@@ -448,7 +501,8 @@ static void self_hit_polygon(const char *name, const double origin[3], unsigned 
 			p[i] = origin[i] + a * e1[i] + b * e2[i];
 			o[i] = p[i] + back * w[i];
 		}
-		r = test_ray(to_vec(o), vec_make((real)-w[0], (real)-w[1], (real)-w[2]));
+		r = test_ray(to_point(o),
+			     vec_make(test_real(-w[0]), test_real(-w[1]), test_real(-w[2])));
 		if (!scene_intersect(&s, &r, REAL_MAX, &h)) {
 			no_primary++;
 			continue;
@@ -465,10 +519,10 @@ static void self_hit_polygon(const char *name, const double origin[3], unsigned 
 			rnd_around(side, 0.0, 1.0, dir);
 			next = spawn(&h, outward, dir);
 			/* The new origin lies strictly on the side it was sent to. */
-			excess = (long double)s.objects[0].u.polygon.normal.x * next.origin.x +
-				 (long double)s.objects[0].u.polygon.normal.y * next.origin.y +
-				 (long double)s.objects[0].u.polygon.normal.z * next.origin.z -
-				 s.objects[0].u.polygon.offset;
+			excess = LD(s.objects[0].u.polygon.normal.x) * LD(next.origin.x) +
+				 LD(s.objects[0].u.polygon.normal.y) * LD(next.origin.y) +
+				 LD(s.objects[0].u.polygon.normal.z) * LD(next.origin.z) -
+				 LD(s.objects[0].u.polygon.offset);
 			if (!((excess > 0) == outward)) {
 				wrong_side++;
 				continue;
@@ -519,14 +573,14 @@ static void add_triangle(const double *a, const double *b, const double *c)
 	memset(o, 0, sizeof *o);
 	o->kind = SHAPE_POLYGON;
 	o->u.polygon.normal = to_vec(grid_n);
-	o->u.polygon.offset = (real)dot3(grid_n, grid_origin);
+	o->u.polygon.offset = length(dot3(grid_n, grid_origin));
 	o->u.polygon.axis = 0;
 	o->u.polygon.first = s.vertex_count;
 	o->u.polygon.count = 3;
 	for (i = 0; i < 3; i++) {
 		double p[3];
 		grid_point(uv[i], p);
-		s.vertices[s.vertex_count] = to_vec(p);
+		s.vertices[s.vertex_count] = to_point(p);
 		s.projected[s.vertex_count] = polygon_project(s.vertices[s.vertex_count], 0);
 		s.vertex_count++;
 	}
@@ -535,6 +589,8 @@ static void add_triangle(const double *a, const double *b, const double *c)
 static void build_fixture(fixture *fx)
 {
 	int i, j;
+	/* The grid, the cube and the origins (up to 10 from them) reach about 32. */
+	world_shift = test_shift(32.0);
 	one_object_scene();
 	s.object_count = 0;
 	s.vertex_count = 0;
@@ -568,10 +624,20 @@ static void build_fixture(fixture *fx)
 /* Rays from the front through random points of interior grid edges and vertices, and
  * through random edges and vertices of the cube into its interior: each must hit the
  * right object where it was aimed. */
+/* Where a hit may be along a ray of length `back`: relative in floating point. In Q16.16
+ * (at the fixture's scale): 2^-16 of t (the rounded direction, real.h), and a face's
+ * rounded normal (half an LSB per component) moves its plane by 1.5 LSB of |p|inf (up to
+ * 32 units here), which a ray at cosine 0.1 sees 10 times along it (measured: up to 9139
+ * LSB at t = 1000). */
+#define T_TOL(float_tol, double_tol, back)                                                         \
+	TOL3((float_tol) * (back), (double_tol) * (back),                                          \
+	     ((back) * scale + 1.5 * 32.0 * scale / 0.1) * LSB)
+
 static void fall_through(const char *name, fixture *fx)
 {
 	enum { RAYS = 20000 };
 	int n, grid_leaks = 0, cube_leaks = 0, wrong = 0;
+	double scale = test_scale(world_shift);
 	char what[96];
 
 	for (n = 0; n < RAYS; n++) {
@@ -602,11 +668,12 @@ static void fall_through(const char *name, fixture *fx)
 		rnd_around(grid_n, 0.1, 1.0, w);
 		for (k = 0; k < 3; k++)
 			o[k] = p[k] + back * w[k];
-		r = test_ray(to_vec(o), vec_make((real)-w[0], (real)-w[1], (real)-w[2]));
+		r = test_ray(to_point(o),
+			     vec_make(test_real(-w[0]), test_real(-w[1]), test_real(-w[2])));
 		if (!scene_intersect(&s, &r, REAL_MAX, &h))
 			grid_leaks++;
 		else if (!(h.object < fx->polygons &&
-			   fabs((double)h.t - back) < TOL(1e-4, 1e-10) * back))
+			   fabs(test_double(h.t) - back * scale) < T_TOL(1e-4, 1e-10, back)))
 			wrong++;
 	}
 	for (n = 0; n < RAYS; n++) {
@@ -628,11 +695,11 @@ static void fall_through(const char *name, fixture *fx)
 			dir[k] /= sqrt(dot3(dl, dl));
 		for (k = 0; k < 3; k++)
 			o[k] = p[k] - back * dir[k];
-		r = test_ray(to_vec(o), to_vec(dir));
+		r = test_ray(to_point(o), to_vec(dir));
 		if (!scene_intersect(&s, &r, REAL_MAX, &h))
 			cube_leaks++;
 		else if (!(h.object == fx->cube &&
-			   fabs((double)h.t - back) < TOL(1e-3, 1e-9) * back))
+			   fabs(test_double(h.t) - back * scale) < T_TOL(1e-3, 1e-9, back)))
 			wrong++;
 	}
 	snprintf(what, sizeof what, "%s: leaks at grid edges and vertices", name);
@@ -653,21 +720,25 @@ static void energy(void)
 	int i, side, a, out_of_range = 0, asymmetric = 0, beer_bad = 0;
 	for (i = 0; i < (int)(sizeof ratios / sizeof ratios[0]); i++)
 		for (side = 0; side < 2; side++) {
-			real eta = (real)(side ? ratios[i] : 1.0 / ratios[i]);
+			real eta = test_real(side ? ratios[i] : 1.0 / ratios[i]);
 			for (a = 0; a <= 1000; a++) {
-				real cos_i = (real)(a / 1000.0), r = optics_fresnel(cos_i, eta);
-				double sin_i = sqrt(1.0 - (double)cos_i * (double)cos_i);
-				vec3 d = vec_make((real)sin_i, 0, -cos_i), t;
+				real cos_i = test_real(a / 1000.0), r = optics_fresnel(cos_i, eta);
+				double sin_i = sqrt(1.0 - test_double(cos_i) * test_double(cos_i));
+				vec3 d = vec_make(test_real(sin_i), REAL_C(0.0), -cos_i), t;
 				if (!(r >= REAL_C(0.0) && r <= REAL_C(1.0) &&
 				      REAL_C(1.0) - r >= REAL_C(0.0)))
 					out_of_range++;
 				/* Reciprocity: from the transmitted side, at theta_t, the same R.
 				 * Away from grazing, where R's slope is finite. */
-				if (a >= 50 && optics_refract(d, vec_make(0, 0, 1), eta, &t) &&
+				if (a >= 50 && optics_refract(d, VEC_C(0, 0, 1), eta, &t) &&
 				    -t.z >= REAL_C(0.05)) {
 					real back = optics_fresnel(-t.z,
 								   real_div(REAL_C(1.0), eta));
-					if (!((double)real_fabs(back - r) <= TOL(2e-5, 1e-12)))
+					/* Q16.16: R from either side comes from rounded cosines
+					 * (t.z good to a few LSB), and near grazing R is steep:
+					 * measured up to 357 LSB at cos 0.05. */
+					if (!(test_double(real_fabs(back - r)) <=
+					      TOL3(2e-5, 1e-12, 512 * LSB)))
 						asymmetric++;
 				}
 			}
@@ -679,7 +750,8 @@ static void energy(void)
 		out_of_range += !(r >= REAL_C(0.0) && r <= REAL_C(1.0));
 	}
 	for (a = 0; a < 2000; a++) {
-		real pass = optics_beer((real)rnd_range(0.0, 10.0), (real)rnd_range(-5.0, 50.0));
+		real pass = optics_beer(test_real(rnd_range(0.0, 10.0)),
+					test_real(rnd_range(-5.0, 50.0)));
 		beer_bad += !(pass >= REAL_C(0.0) && pass <= REAL_C(1.0));
 	}
 	CHECK_INT(out_of_range, 0);

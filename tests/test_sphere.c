@@ -1,7 +1,9 @@
 /* test_sphere.c - the sphere hard cases S01-S19 of numerics.md section 6, and the
  * stable quadratic solver behind them.
  * See LICENSE for copyright and licence. */
+#include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "shape.h"
 #include "support.h"
@@ -11,82 +13,117 @@
  * Expected values are the catalog's, checked again in 40-digit arithmetic. */
 typedef struct {
 	const char *id;
-	real o[3], d[3], c[3];
-	real radius, tmin;
+	case_real o[3], d[3], c[3];
+	case_real radius, tmin;
 	int hit;
-	real t;     /* expected nearest t > tmin */
-	double tol; /* absolute tolerance on t */
-	real n[3];  /* expected outward normal at the hit */
+	case_real t; /* expected nearest t > tmin */
+	double tol;  /* absolute tolerance on t (fixed point: at the case's scale) */
+	case_real n[3]; /* expected outward normal at the hit */
 	double ntol;
 } sphere_case;
 
-/* Known float limits get the float tolerance the catalog gives; "exact" rows are 0. */
+/* Known float limits get the float tolerance the catalog gives; "exact" rows are 0.
+ * Q16.16 runs each row at the scale the parser would give its scene (2^shift, chosen by
+ * the extent: 2^12 for a unit sphere at the origin, 2^-12 for the Earth), and its
+ * tolerances count LSB at that scale: inputs rounded there to half an LSB, times what
+ * the case amplifies them by, and 2^-16 of t where the direction is not exact (its
+ * length, and so a = |d|^2, are good to an LSB: real.h). */
 static const sphere_case cases[] = {
 	{"S01", {0, 0, 0}, {0, 0, 1}, {0, 0, 5}, 1, 0, 1, 4, 0, {0, 0, -1}, 0},
 	{"S02", {0, 0, 0}, {0, 0, -1}, {0, 0, 5}, 1, 0, 0, 0, 0, {0, 0, 0}, 0},
 	/* Origin at the centre: the near root is behind, the far one is the exit. */
 	{"S03", {0, 0, 5}, {0, 0, 1}, {0, 0, 5}, 1, 0, 1, 1, 0, {0, 0, 1}, 0},
-	{"S04", {0, REAL_C(0.5), 5}, {0, 0, 1}, {0, 0, 5}, 1, 0, 1,
-	 REAL_C(0.86602540378443864676), TOL(1e-7, 1e-15),
-	 {0, REAL_C(0.5), REAL_C(0.86602540378443865)}, TOL(2e-7, 1e-15)},
+	{"S04", {0, CASE_C(0.5), 5}, {0, 0, 1}, {0, 0, 5}, 1, 0, 1,
+	 CASE_C(0.86602540378443864676), TOL3(1e-7, 1e-15, 1 * LSB),
+	 {0, CASE_C(0.5), CASE_C(0.86602540378443865)}, TOL3(2e-7, 1e-15, 1 * LSB)},
 	/* Discriminant exactly 0: the policy `>= 0` makes a tangent a hit. */
 	{"S05", {0, 1, 0}, {0, 0, 1}, {0, 0, 5}, 1, 0, 1, 5, 0, {0, 1, 0}, 0},
-	/* 2^-22 outside and inside the silhouette: exact in float, so no input rounding. */
-	{"S06", {0, REAL_C(1.0) + REAL_C(2.384185791015625e-07), 0}, {0, 0, 1}, {0, 0, 5}, 1, 0,
+	/* 2^-22 outside and inside the silhouette: exact in float, so no input rounding; in
+	 * Q16.16 (scale 2^9) 2^-13, 8 LSB, exact too. */
+	{"S06", {0, CASE_C(1.0) + CASE_C(2.384185791015625e-07), 0}, {0, 0, 1}, {0, 0, 5}, 1, 0,
 	 0, 0, 0, {0, 0, 0}, 0},
-	{"S07", {0, REAL_C(1.0) - REAL_C(2.384185791015625e-07), 0}, {0, 0, 1}, {0, 0, 5}, 1, 0,
-	 1, REAL_C(4.9993094660751565452), TOL(2e-6, 1e-12),
-	 {0, REAL_C(0.9999997615814209), REAL_C(-0.00069053392484345484)}, TOL(2e-6, 1e-12)},
-	{"S08", {0, REAL_C(1.0001), 0}, {0, 0, 1}, {0, 0, 1000}, 1, 0, 0, 0, 0, {0, 0, 0}, 0},
-	{"S09", {0, REAL_C(0.9999), 0}, {0, 0, 1}, {0, 0, 1000}, 1, 0, 1,
-	 REAL_C(999.98585821793407917), TOL(1e-4, 1e-9),
-	 {0, REAL_C(0.9999), REAL_C(-0.014141782065920829)}, TOL(1e-4, 1e-9)},
-	/* pbrt's orthographic unit sphere 400 units away, at its silhouette. */
-	{"S10", {REAL_C(0.7), REAL_C(0.714), 0}, {0, 0, 1}, {0, 0, 400}, 1, 0, 1,
-	 REAL_C(399.9857171431429143), TOL(1e-4, 1e-9),
-	 {REAL_C(0.7), REAL_C(0.714), REAL_C(-0.0142828568570857)}, TOL(1e-4, 1e-9)},
+	{"S07", {0, CASE_C(1.0) - CASE_C(2.384185791015625e-07), 0}, {0, 0, 1}, {0, 0, 5}, 1, 0,
+	 1, CASE_C(4.9993094660751565452), TOL3(2e-6, 1e-12, 1 * LSB),
+	 {0, CASE_C(0.9999997615814209), CASE_C(-0.00069053392484345484)},
+	 TOL3(2e-6, 1e-12, 1 * LSB)},
+	{"S08", {0, CASE_C(1.0001), 0}, {0, 0, 1}, {0, 0, 1000}, 1, 0, 0, 0, 0, {0, 0, 0}, 0},
+	/* Q16.16 (scale 2^2): y rounds by up to half an LSB, which the grazing chord turns
+	 * into y / sqrt(r^2 - y^2) = 71 times that in t (35 LSB), and the normal's z by that
+	 * over r (9 LSB). */
+	{"S09", {0, CASE_C(0.9999), 0}, {0, 0, 1}, {0, 0, 1000}, 1, 0, 1,
+	 CASE_C(999.98585821793407917), TOL3(1e-4, 1e-9, 40 * LSB),
+	 {0, CASE_C(0.9999), CASE_C(-0.014141782065920829)}, TOL3(1e-4, 1e-9, 10 * LSB)},
+	/* pbrt's orthographic unit sphere 400 units away, at its silhouette. Q16.16 (scale
+	 * 2^3): x and y round by half an LSB each, 70 times that in t (49 LSB), over r = 8
+	 * in the normal (6 LSB). */
+	{"S10", {CASE_C(0.7), CASE_C(0.714), 0}, {0, 0, 1}, {0, 0, 400}, 1, 0, 1,
+	 CASE_C(399.9857171431429143), TOL3(1e-4, 1e-9, 50 * LSB),
+	 {CASE_C(0.7), CASE_C(0.714), CASE_C(-0.0142828568570857)}, TOL3(1e-4, 1e-9, 8 * LSB)},
+#if !REAL_FIXED
+	/* S11, S12: not in Q16.16. A 1e-3 sphere 1000 units away is a scene 1e6 times its
+	 * smallest feature: at any scale that holds the extent the radius is a few LSB (r^2
+	 * and the hit point lost), so the parser refuses such scenes (test_range_refusals). */
 	/* A 1e-3 sphere 1000 units away: float quantises the hit point to ~6e-5, a few
 	 * percent of r (catalog: surface error up to 0.078 r), so its normal is checked in float
 	 * only to that size. */
-	{"S11", {0, 0, 0}, {REAL_C(0.36), REAL_C(0.48), REAL_C(0.8)}, {360, 480, 800},
-	 REAL_C(1e-3), 0, 1, REAL_C(999.999), TOL(2e-4, 1e-9),
-	 {REAL_C(-0.36), REAL_C(-0.48), REAL_C(-0.8)}, TOL(0.08, 1e-6)},
+	{"S11", {0, 0, 0}, {CASE_C(0.36), CASE_C(0.48), CASE_C(0.8)}, {360, 480, 800},
+	 CASE_C(1e-3), 0, 1, CASE_C(999.999), TOL(2e-4, 1e-9),
+	 {CASE_C(-0.36), CASE_C(-0.48), CASE_C(-0.8)}, TOL(0.08, 1e-6)},
 	/* D = C + 0.0011 (0.8, -0.6, 0), taken in decimal: passes 1.1e-3 from the centre. */
-	{"S12", {0, 0, 0}, {REAL_C(360.00088), REAL_C(479.99934), 800}, {360, 480, 800},
-	 REAL_C(1e-3), 0, 0, 0, 0, {0, 0, 0}, 0},
-	/* smallpt's left wall from inside: D = (1, 40.8, 81.6) - O, taken in decimal. */
-	{"S13", {50, 52, REAL_C(295.6)}, {-49, REAL_C(-11.2), -214},
-	 {REAL_C(100001.0), REAL_C(40.8), REAL_C(81.6)}, REAL_C(1e5), 0, 1,
-	 REAL_C(219.82365659773745107), TOL(5e-3, 1e-9), {-1, 0, 0}, TOL(1e-6, 1e-12)},
+	{"S12", {0, 0, 0}, {CASE_C(360.00088), CASE_C(479.99934), 800}, {360, 480, 800},
+	 CASE_C(1e-3), 0, 0, 0, 0, {0, 0, 0}, 0},
+#endif
+	/* smallpt's left wall from inside: D = (1, 40.8, 81.6) - O, taken in decimal. In
+	 * Q16.16 the wall alone is a scene of extent 2e5 and feature 1e5: it runs at scale
+	 * 2^-6 (an LSB is 1e-3 units), t within 2^-16 of t (3.4 LSB) and the origin's
+	 * rounding. */
+	{"S13", {50, 52, CASE_C(295.6)}, {-49, CASE_C(-11.2), -214},
+	 {CASE_C(100001.0), CASE_C(40.8), CASE_C(81.6)}, CASE_C(1e5), 0, 1,
+	 CASE_C(219.82365659773745107), TOL3(5e-3, 1e-9, 8 * LSB), {-1, 0, 0},
+	 TOL3(1e-6, 1e-12, 1 * LSB)},
 	/* Origin on the surface, leaving: the root at ~0 must not count. */
-	{"S14", {REAL_C(0.6), REAL_C(0.8), 0}, {REAL_C(0.6), REAL_C(0.8), 0}, {0, 0, 0}, 1, 0, 0,
+	{"S14", {CASE_C(0.6), CASE_C(0.8), 0}, {CASE_C(0.6), CASE_C(0.8), 0}, {0, 0, 0}, 1, 0, 0,
 	 0, 0, {0, 0, 0}, 0},
 	/* Origin on the surface, entering: the residual root ~1e-20 is the origin itself, so
-	 * the catalog needs a tmin > 0 here; the far side at t = 2 is the answer. */
-	{"S15", {REAL_C(0.6), REAL_C(0.8), 0}, {REAL_C(-0.6), REAL_C(-0.8), 0}, {0, 0, 0}, 1,
-	 REAL_C(1e-6), 1, 2, 1e-6, {REAL_C(-0.6), REAL_C(-0.8), 0}, TOL(1e-6, 1e-12)},
+	 * the catalog needs a tmin > 0 here; the far side at t = 2 is the answer. Q16.16
+	 * (scale 2^12): the rounded direction makes t good to 2^-16 of t, 8192 LSB. */
+	{"S15", {CASE_C(0.6), CASE_C(0.8), 0}, {CASE_C(-0.6), CASE_C(-0.8), 0}, {0, 0, 0}, 1,
+	 CASE_C(1e-6), 1, 2, TOL3(1e-6, 1e-6, 8192 * LSB), {CASE_C(-0.6), CASE_C(-0.8), 0},
+	 TOL3(1e-6, 1e-12, 1 * LSB)},
 	/* Grazing exit from a point on the surface, D = (0.8, -0.6, 0) - 1e-3 (0.6, 0.8, 0).
 	 * Double: 1e-9 relative. Float is ill-conditioned here (the catalog observes a 1.2 %
-	 * error, .0019765): the hit must still be found, within 2 %. */
-	{"S16", {REAL_C(0.6), REAL_C(0.8), 0}, {REAL_C(0.7994), REAL_C(-0.6008), 0}, {0, 0, 0}, 1,
-	 REAL_C(1e-6), 1, REAL_C(0.0019999990000007499994), TOL(4e-5, 2e-12),
-	 {REAL_C(0.6015987984012016), REAL_C(0.7987984012015988), 0}, TOL(1e-3, 1e-9)},
-	{"S17", {0, REAL_C(0.9999), REAL_C(-1e4)}, {0, 0, 1}, {0, 0, 0}, 1, 0, 1,
-	 REAL_C(9999.9858582179340792), TOL(2e-3, 1e-8),
-	 {0, REAL_C(0.9999), REAL_C(-0.014141782065920829)}, TOL(1e-3, 1e-9)},
+	 * error, .0019765): the hit must still be found, within 2 %. Q16.16 (scale 2^12):
+	 * the origin rounds up to half an LSB off the surface, which the grazing direction
+	 * (cosine 1e-3 to it) turns into a residual root up to 500 LSB (1.2e-7) along the
+	 * ray; tmin is 4e-6 there, still far below the exit at 2e-3. The exit, at 2 r cos,
+	 * moves by 2 r 7.6e-6 (4096 LSB) when the direction's rounding (half an LSB, 7.6e-6
+	 * rad) turns it, plus those 500: within 1 %. */
+	{"S16", {CASE_C(0.6), CASE_C(0.8), 0}, {CASE_C(0.7994), CASE_C(-0.6008), 0}, {0, 0, 0}, 1,
+	 TOL3(CASE_C(1e-6), CASE_C(1e-6), 4e-6), 1, CASE_C(0.0019999990000007499994),
+	 TOL3(4e-5, 2e-12, 5000 * LSB),
+	 {CASE_C(0.6015987984012016), CASE_C(0.7987984012015988), 0}, TOL3(1e-3, 1e-9, 2 * LSB)},
+	/* Q16.16 (scale 2^-2, r = 0.25): y rounds by half an LSB, 71 times that in t (35 LSB)
+	 * and 71 / r in the normal's z (141 LSB). */
+	{"S17", {0, CASE_C(0.9999), CASE_C(-1e4)}, {0, 0, 1}, {0, 0, 0}, 1, 0, 1,
+	 CASE_C(9999.9858582179340792), TOL3(2e-3, 1e-8, 40 * LSB),
+	 {0, CASE_C(0.9999), CASE_C(-0.014141782065920829)}, TOL3(1e-3, 1e-9, 150 * LSB)},
 	/* The Earth from 1000 m up: above the horizon dip (1.0151 degrees) misses. */
-	{"S18a", {0, 1000, 0}, {0, REAL_C(-0.01), -1}, {0, REAL_C(-6.371e6), 0},
-	 REAL_C(6.371e6), 0, 0, 0, 0, {0, 0, 0}, 0},
+	{"S18a", {0, 1000, 0}, {0, CASE_C(-0.01), -1}, {0, CASE_C(-6.371e6), 0},
+	 CASE_C(6.371e6), 0, 0, 0, 0, {0, 0, 0}, 0},
 	/* Float: a 24 m error is the catalog's known limit (positions at 6e6 quantise to
-	 * 0.5 m, and c = |f|^2 - r^2 cancels). */
-	{"S18b", {0, 1000, 0}, {0, REAL_C(-0.02), -1}, {0, REAL_C(-6.371e6), 0},
-	 REAL_C(6.371e6), 0, 1, REAL_C(68325.943623833039587), TOL(25.0, 1e-6),
-	 {0, REAL_C(0.99994251363197834), REAL_C(-0.010722379929885238)}, TOL(1e-5, 1e-12)},
+	 * 0.5 m, and c = |f|^2 - r^2 cancels). Q16.16 (scale 2^-12, an LSB is 6 cm): the
+	 * direction's y rounds by up to half an LSB (7.6e-6 rad), and near the horizon t
+	 * moves 7.4e6 m per radian: 899 LSB (56 m); S18c 6.0e7 m per radian, 7360 LSB. */
+	{"S18b", {0, 1000, 0}, {0, CASE_C(-0.02), -1}, {0, CASE_C(-6.371e6), 0},
+	 CASE_C(6.371e6), 0, 1, CASE_C(68325.943623833039587), TOL3(25.0, 1e-6, 1200 * LSB),
+	 {0, CASE_C(0.99994251363197834), CASE_C(-0.010722379929885238)},
+	 TOL3(1e-5, 1e-12, 2 * LSB)},
 	/* Just below the horizon (-0.0177 misses). The catalog gives only the double
 	 * tolerance; float observed 166 m off, the same known limit as S18b. */
-	{"S18c", {0, 1000, 0}, {0, REAL_C(-0.0178), -1}, {0, REAL_C(-6.371e6), 0},
-	 REAL_C(6.371e6), 0, 1, REAL_C(102569.21576279713235), TOL(170.0, 1e-5),
-	 {0, REAL_C(0.99987043747028409), REAL_C(-0.016096840465840566)}, TOL(1e-4, 1e-12)},
+	{"S18c", {0, 1000, 0}, {0, CASE_C(-0.0178), -1}, {0, CASE_C(-6.371e6), 0},
+	 CASE_C(6.371e6), 0, 1, CASE_C(102569.21576279713235), TOL3(170.0, 1e-5, 10000 * LSB),
+	 {0, CASE_C(0.99987043747028409), CASE_C(-0.016096840465840566)},
+	 TOL3(1e-4, 1e-12, 10 * LSB)},
 	/* Origin at the tangent point: b' = 0 and the discriminant is 0, so q = 0 and the
 	 * textbook c/q is 0/0; a touch at t = 0 is not > tmin, so it is a miss. */
 	{"S19", {0, 1, 5}, {0, 0, 1}, {0, 0, 5}, 1, 0, 0, 0, 0, {0, 0, 0}, 0},
@@ -101,108 +138,193 @@ static object make_sphere(vec3 center, real radius, unsigned flags)
 	o.line = 0;
 	o.u.sphere.center = center;
 	o.u.sphere.radius = radius;
-	o.u.sphere.radius2 = real_mul(radius, radius);
+	o.u.sphere.radius2 = real_mul2(radius, radius);
 	return o;
+}
+
+/* The largest coordinate of a case's scene (the ray's origin and the sphere): what the
+ * parser would scale it by in fixed point. */
+static double case_extent(const sphere_case *k)
+{
+	double e = 0.0;
+	int i;
+	for (i = 0; i < 3; i++) {
+		double o = fabs((double)k->o[i]), c = fabs((double)k->c[i]) + (double)k->radius;
+		e = o > e ? o : e;
+		e = c > e ? c : e;
+	}
+	return e;
 }
 
 static void run_case(const sphere_case *k)
 {
-	object o = make_sphere(vec_make(k->c[0], k->c[1], k->c[2]), k->radius, OBJ_TWO_SIDED);
-	ray r = test_ray(vec_make(k->o[0], k->o[1], k->o[2]), vec_make(k->d[0], k->d[1], k->d[2]));
+	/* Fixed point: the case as the parser would scale its scene (lengths times 2^shift,
+	 * rounded once); t is compared at that scale, in LSB. Floating point: shift 0. */
+	int shift = test_shift(case_extent(k));
+	double scale = test_scale(shift);
+	real radius = CASE_REAL(k->radius, shift);
+	object o = make_sphere(vec_make(CASE_REAL(k->c[0], shift), CASE_REAL(k->c[1], shift),
+					CASE_REAL(k->c[2], shift)),
+			       radius, OBJ_TWO_SIDED);
+	ray r = test_ray(vec_make(CASE_REAL(k->o[0], shift), CASE_REAL(k->o[1], shift),
+				  CASE_REAL(k->o[2], shift)),
+			 vec_make(CASE_REAL(k->d[0], 0), CASE_REAL(k->d[1], 0),
+				  CASE_REAL(k->d[2], 0)));
+	real tmin = CASE_REAL(k->tmin, shift);
 	char what[64];
 	hit h;
-	int got = sphere_intersect(&o, &r, k->tmin, REAL_MAX, &h);
+	int got = sphere_intersect(&o, &r, tmin, REAL_MAX, &h);
 
 	snprintf(what, sizeof what, "%s: %s", k->id, k->hit ? "expected a hit" : "expected a miss");
 	if (!test_check(got == k->hit, __FILE__, __LINE__, what) || !got)
 		return;
 	snprintf(what, sizeof what, "%s t", k->id);
-	test_check_near((double)h.t, (double)k->t, k->tol, __FILE__, __LINE__, what);
+	test_check_near(test_double(h.t), (double)k->t * scale, k->tol, __FILE__, __LINE__, what);
 	snprintf(what, sizeof what, "%s normal.x", k->id);
-	test_check_near((double)h.normal.x, (double)k->n[0], k->ntol, __FILE__, __LINE__, what);
+	test_check_near(test_double(h.normal.x), (double)k->n[0], k->ntol, __FILE__, __LINE__, what);
 	snprintf(what, sizeof what, "%s normal.y", k->id);
-	test_check_near((double)h.normal.y, (double)k->n[1], k->ntol, __FILE__, __LINE__, what);
+	test_check_near(test_double(h.normal.y), (double)k->n[1], k->ntol, __FILE__, __LINE__, what);
 	snprintf(what, sizeof what, "%s normal.z", k->id);
-	test_check_near((double)h.normal.z, (double)k->n[2], k->ntol, __FILE__, __LINE__, what);
+	test_check_near(test_double(h.normal.z), (double)k->n[2], k->ntol, __FILE__, __LINE__, what);
 	/* The shadow-ray form (no hit record) must give the same answer. */
 	snprintf(what, sizeof what, "%s: same answer without a hit record", k->id);
-	test_check(sphere_intersect(&o, &r, k->tmin, REAL_MAX, NULL) == got, __FILE__, __LINE__,
+	test_check(sphere_intersect(&o, &r, tmin, REAL_MAX, NULL) == got, __FILE__, __LINE__,
 		   what);
 }
 
-/* Solver rows: a t^2 + 2 b t + c = 0 with known roots. */
+/* Solver rows: a t^2 + 2 b t + c = 0 with known roots. c and the discriminant are real2
+ * (Q32.32 in fixed point: real2_from widens). */
+#define C2(x) real2_from(REAL_C(x))
 static void test_solve_quadratic(void)
 {
 	real t0 = REAL_C(-7.0), t1 = REAL_C(-7.0);
 
 	/* t^2 - 3t + 2: roots 1 and 2, from the b < 0 branch. */
-	CHECK_INT(solve_quadratic(1, REAL_C(-1.5), 2, REAL_C(0.25), &t0, &t1), 2);
-	CHECK_NEAR(t0, 1.0, 0.0);
-	CHECK_NEAR(t1, 2.0, 0.0);
+	CHECK_INT(solve_quadratic(REAL_C(1.0), REAL_C(-1.5), C2(2.0), C2(0.25), &t0, &t1), 2);
+	CHECK_REAL(t0, 1.0, 0.0);
+	CHECK_REAL(t1, 2.0, 0.0);
 	/* t^2 + 3t + 2: roots -2 and -1 (b > 0), returned in order. */
-	CHECK_INT(solve_quadratic(1, REAL_C(1.5), 2, REAL_C(0.25), &t0, &t1), 2);
-	CHECK_NEAR(t0, -2.0, 0.0);
-	CHECK_NEAR(t1, -1.0, 0.0);
+	CHECK_INT(solve_quadratic(REAL_C(1.0), REAL_C(1.5), C2(2.0), C2(0.25), &t0, &t1), 2);
+	CHECK_REAL(t0, -2.0, 0.0);
+	CHECK_REAL(t1, -1.0, 0.0);
+#if !REAL_FIXED
 	/* t^2 - 2e8 t + 1: the small root 5e-9 cancels to 0 in the textbook formula; the
 	 * stable c/q keeps it to the last bit. */
 	CHECK_INT(solve_quadratic(1, REAL_C(-1e8), 1, REAL_C(1e16) - REAL_C(1.0), &t0, &t1), 2);
 	CHECK_NEAR(t0 * REAL_C(2e8), 1.0, TOL(1e-6, 1e-15));
 	CHECK_NEAR(t1, 2e8, TOL(16.0, 1e-7));
-	/* No real roots; and a NaN discriminant is rejected, not passed on (N01). */
-	CHECK_INT(solve_quadratic(1, 0, 1, -1, &t0, &t1), 0);
+#else
+	/* The same in Q16.16's range (1e8 is past it): t^2 - 2^14 t + 1, roots 2^-14 (4 LSB)
+	 * and 2^14 - 2^-14. The small root is c/q, exactly 4 LSB; the large one is q itself,
+	 * sqrt(2^26 - 1) rounded, within 1 LSB. */
+	CHECK_INT(solve_quadratic(REAL_C(1.0), REAL_C(-8192.0), C2(1.0), (real2)67108863 << 32,
+				  &t0, &t1),
+		  2);
+	CHECK_INT(t0, 4);
+	CHECK_REAL(t1, 16384.0 - 1.0 / 16384.0, 1 * LSB);
+#endif
+	/* No real roots. */
+	CHECK_INT(solve_quadratic(REAL_C(1.0), REAL_C(0.0), C2(1.0), C2(-1.0), &t0, &t1), 0);
+#if !REAL_FIXED
+	/* A NaN discriminant is rejected, not passed on (N01). Q16.16 has no NaN. */
 	CHECK_INT(solve_quadratic(1, 0, 1, REAL_C(NAN), &t0, &t1), 0);
+#endif
 	/* a = 0 is linear, 2 b t + c = 0 (a ray parallel to a cylinder's axis): t = -c / 2b. */
-	CHECK_INT(solve_quadratic(0, 1, -4, 1, &t0, &t1), 2);
-	CHECK_NEAR(t0, 2.0, 0.0);
-	CHECK_NEAR(t1, 2.0, 0.0);
-	CHECK_INT(solve_quadratic(0, -1, 4, 1, &t0, &t1), 2);
-	CHECK_NEAR(t0, 2.0, 0.0);
-	CHECK_NEAR(t1, 2.0, 0.0);
+	CHECK_INT(solve_quadratic(REAL_C(0.0), REAL_C(1.0), C2(-4.0), C2(1.0), &t0, &t1), 2);
+	CHECK_REAL(t0, 2.0, 0.0);
+	CHECK_REAL(t1, 2.0, 0.0);
+	CHECK_INT(solve_quadratic(REAL_C(0.0), REAL_C(-1.0), C2(4.0), C2(1.0), &t0, &t1), 2);
+	CHECK_REAL(t0, 2.0, 0.0);
+	CHECK_REAL(t1, 2.0, 0.0);
 	/* S19: q = 0 (b = 0, discriminant 0). The unguarded c/q is 0/0 = NaN. */
 	t0 = t1 = REAL_C(-7.0);
-	CHECK_INT(solve_quadratic(1, 0, 0, 0, &t0, &t1), 2);
+	CHECK_INT(solve_quadratic(REAL_C(1.0), REAL_C(0.0), C2(0.0), C2(0.0), &t0, &t1), 2);
 	CHECK(t0 == t0 && t1 == t1);
-	CHECK_NEAR(t0, 0.0, 0.0);
-	CHECK_NEAR(t1, 0.0, 0.0);
+	CHECK_REAL(t0, 0.0, 0.0);
+	CHECK_REAL(t1, 0.0, 0.0);
 	/* q = 0 with a = 0 as well: nothing to solve, and no NaN written. */
 	t0 = t1 = REAL_C(-7.0);
-	CHECK_INT(solve_quadratic(0, 0, 0, 0, &t0, &t1), 0);
-	CHECK_NEAR(t0, -7.0, 0.0);
+	CHECK_INT(solve_quadratic(REAL_C(0.0), REAL_C(0.0), C2(0.0), C2(0.0), &t0, &t1), 0);
+	CHECK_REAL(t0, -7.0, 0.0);
 }
 
-/* The interval and the flags around the catalog rows. */
+/* The interval and the flags around the catalog rows; every value here is exact in each
+ * type (Q16.16 too, at scale 1). */
 static void test_sphere_contract(void)
 {
-	object o = make_sphere(vec_make(0, 0, 5), 1, OBJ_TWO_SIDED);
-	ray r = test_ray(vec_make(0, 0, 0), vec_make(0, 0, 1));
+	object o = make_sphere(vec_make(REAL_C(0.0), REAL_C(0.0), REAL_C(5.0)), REAL_C(1.0),
+			       OBJ_TWO_SIDED);
+	ray r = test_ray(vec_make(REAL_C(0.0), REAL_C(0.0), REAL_C(0.0)),
+			 vec_make(REAL_C(0.0), REAL_C(0.0), REAL_C(1.0)));
 	hit h;
 
 	/* S01's hit at t = 4 lies outside (0, 3.9) and inside (0, 4.1). */
-	CHECK(!sphere_intersect(&o, &r, 0, REAL_C(3.9), &h));
-	CHECK(sphere_intersect(&o, &r, 0, REAL_C(4.1), &h));
+	CHECK(!sphere_intersect(&o, &r, REAL_C(0.0), REAL_C(3.9), &h));
+	CHECK(sphere_intersect(&o, &r, REAL_C(0.0), REAL_C(4.1), &h));
 	/* Past the near root, the far root at 6 is next. */
 	CHECK(sphere_intersect(&o, &r, REAL_C(4.5), REAL_MAX, &h));
-	CHECK_NEAR(h.t, 6.0, 0.0);
-	CHECK_NEAR(h.normal.z, 1.0, 0.0);
+	CHECK_REAL(h.t, 6.0, 0.0);
+	CHECK_REAL(h.normal.z, 1.0, 0.0);
 
 	/* NFF's negative radius: only the inside shows, so from outside the far wall. */
 	o.flags = OBJ_TWO_SIDED | OBJ_INSIDE_ONLY;
-	CHECK(sphere_intersect(&o, &r, 0, REAL_MAX, &h));
-	CHECK_NEAR(h.t, 6.0, 0.0);
-	CHECK_NEAR(h.point.z, 6.0, 0.0);
-	CHECK_NEAR(h.normal.z, 1.0, 0.0);
+	CHECK(sphere_intersect(&o, &r, REAL_C(0.0), REAL_MAX, &h));
+	CHECK_REAL(h.t, 6.0, 0.0);
+	CHECK_REAL(h.point.z, 6.0, 0.0);
+	CHECK_REAL(h.normal.z, 1.0, 0.0);
 	/* From inside it is the same exit as for an ordinary sphere (S03). */
-	r.origin = vec_make(0, 0, 5);
-	CHECK(sphere_intersect(&o, &r, 0, REAL_MAX, &h));
-	CHECK_NEAR(h.t, 1.0, 0.0);
+	r.origin = vec_make(REAL_C(0.0), REAL_C(0.0), REAL_C(5.0));
+	CHECK(sphere_intersect(&o, &r, REAL_C(0.0), REAL_MAX, &h));
+	CHECK_REAL(h.t, 1.0, 0.0);
 
 	/* The shading normal of a sphere is its geometric normal. */
 	o.flags = OBJ_TWO_SIDED;
-	r.origin = vec_make(0, REAL_C(0.5), 0);
-	CHECK(sphere_intersect(&o, &r, 0, REAL_MAX, &h));
+	r.origin = vec_make(REAL_C(0.0), REAL_C(0.5), REAL_C(0.0));
+	CHECK(sphere_intersect(&o, &r, REAL_C(0.0), REAL_MAX, &h));
 	CHECK(h.shading.x == h.normal.x && h.shading.y == h.normal.y &&
 	      h.shading.z == h.normal.z);
-	CHECK_NEAR(h.point.y, 0.5, 0.0);
+	CHECK_REAL(h.point.y, 0.5, 0.0);
+}
+
+/* Scenes whose dynamic range Q16.16 cannot hold are refused when they are loaded, with a
+ * message naming their extent and smallest feature; floating point takes them. */
+static char refusal[256];
+
+static void keep_message(void *ctx, const char *message)
+{
+	(void)ctx;
+	snprintf(refusal, sizeof refusal, "%s", message);
+}
+
+static void check_range(const char *name, const char *text)
+{
+	static scene sc; /* several megabytes */
+	char what[96];
+	int ok;
+	refusal[0] = '\0';
+	ok = test_parse_buffer(&sc, name, text, keep_message, NULL);
+	snprintf(what, sizeof what, "%s: %s", name, REAL_FIXED ? "refused" : "accepted");
+	test_check(ok == !REAL_FIXED, __FILE__, __LINE__, what);
+	if (REAL_FIXED) {
+		snprintf(what, sizeof what, "%s: the message names extent and smallest feature",
+			 name);
+		test_check(strstr(refusal, "cannot be rendered in " REAL_NAME ": extent") != NULL &&
+				   strstr(refusal, "smallest feature") != NULL,
+			   __FILE__, __LINE__, what);
+	}
+}
+
+static void test_range_refusals(void)
+{
+	/* S11, S12: a 1e-3 sphere 1000 units from the eye. */
+	check_range("s11.nff", "v from 0 0 0 at 0.36 0.48 0.8 up 0 1 0 angle 40 hither 1\n"
+			       "resolution 16 16\ns 360 480 800 0.001\n");
+	/* S13's wall beside unit spheres (smallpt's room): radius 1e5 next to radius 1. */
+	check_range("s13.nff", "v from 50 52 295.6 at 50 52 0 up 0 1 0 angle 40 hither 1\n"
+			       "resolution 16 16\ns 100001 40.8 81.6 100000\ns 27 16.5 47 1\n");
+	/* S18 with a pebble: the Earth beside a 10 m sphere. */
+	check_range("s18.nff", "v from 0 1000 0 at 0 980 -1000 up 0 1 0 angle 40 hither 1\n"
+			       "resolution 16 16\ns 0 -6371000 0 6371000\ns 0 1000 -100 10\n");
 }
 
 void suite_sphere(void)
@@ -212,4 +334,5 @@ void suite_sphere(void)
 		run_case(&cases[i]);
 	test_solve_quadratic();
 	test_sphere_contract();
+	test_range_refusals();
 }
