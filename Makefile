@@ -51,6 +51,12 @@ build/san/unit-tests: $(SRC) $(TEST_SRC) $(wildcard src/*.h tests/*.h)
 	@mkdir -p $(@D)
 	$(CC) $(RT_CFLAGS) $(SAN_FLAGS) -Isrc $(CPPFLAGS) -O1 -o $@ $(LIB_SRC) $(TEST_SRC) $(LDLIBS) $(RT_LDLIBS)
 
+# The fixed-point unit tests under the sanitizers too (integer overflow is what they
+# would catch there).
+build/san/unit-tests-fixed: $(SRC) $(TEST_SRC) $(wildcard src/*.h tests/*.h)
+	@mkdir -p $(@D)
+	$(CC) $(RT_CFLAGS) $(SAN_FLAGS) -DRT_REAL_FIXED -Isrc $(CPPFLAGS) -O1 -o $@ $(LIB_SRC) $(TEST_SRC) $(LDLIBS) $(RT_LDLIBS)
+
 build/san/replay: $(LIB_SRC) tests/fuzz/fuzz_scene.c tests/fuzz/replay.c $(wildcard src/*.h)
 	@mkdir -p $(@D)
 	$(CC) $(RT_CFLAGS) $(SAN_FLAGS) -Isrc $(CPPFLAGS) -O1 -o $@ $(LIB_SRC) tests/fuzz/fuzz_scene.c tests/fuzz/replay.c $(LDLIBS) $(RT_LDLIBS)
@@ -111,7 +117,7 @@ build/rt-%: $(SRC) $(wildcard src/*.h)
 	$(CC) $(WARN) -ffp-contract=off $(VARIANT_FLAGS_$*) $(CPPFLAGS) $(CFLAGS) -o $@ $(SRC) $(LDLIBS) $(RT_LDLIBS)
 
 test: rt build/unit-tests build/san/rt build/san/unit-tests build/san/replay build/san/replay-fixed \
-      build/unit-tests-float build/unit-tests-ref build/unit-tests-fixed build/rt-fixed build/rt-ref $(MCU_TEST)
+      build/unit-tests-float build/unit-tests-ref build/unit-tests-fixed build/san/unit-tests-fixed build/rt-fixed build/rt-ref $(MCU_TEST)
 	@sh tests/run.sh
 
 # Fuzzing with libFuzzer (clang): `make fuzz FUZZ_SECONDS=600` (FUZZ_TYPE=fixed fuzzes

@@ -31,6 +31,7 @@ tally unit-sanitized "$(./build/san/unit-tests 2>&1)"
 tally unit-float "$(./build/unit-tests-float 2>&1)"
 tally unit-long-double "$(./build/unit-tests-ref 2>&1)"
 tally unit-fixed "$(./build/unit-tests-fixed 2>&1)"
+tally unit-fixed-sanitized "$(./build/san/unit-tests-fixed 2>&1)"
 # Every fuzzing corpus input and every bad and good scene, parsed and rendered tiny under
 # ASan+UBSan.
 set -- tests/fuzz/corpus/*
