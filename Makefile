@@ -231,8 +231,15 @@ build/mcu/insncount.so: tools/mcu/insncount.c
 	@mkdir -p $(@D)
 	$(CC) -O2 -Wall -Wextra -shared -fPIC -o $@ tools/mcu/insncount.c
 
+# The host's twin of the MCU build: the same capacities and switches, for comparing
+# every scene of tests/bad and tests/good byte for byte (messages included).
+build/rt-fixed-mcu: $(SRC) $(wildcard src/*.h)
+	@mkdir -p $(@D)
+	$(CC) $(WARN) -ffp-contract=off $(VARIANT_FLAGS_fixed) $(MCU_DEFINES) $(CPPFLAGS) $(CFLAGS) \
+		-o $@ $(SRC) $(LDLIBS) $(RT_LDLIBS)
+
 # qemu-system-arm is installed from Debian's packages when missing.
-mcu-ready: mcu mcu-builtin build/rt-fixed
+mcu-ready: mcu mcu-builtin build/rt-fixed build/rt-fixed-mcu
 	@command -v qemu-system-arm >/dev/null || { apt-get update && apt-get install -y qemu-system-arm; }
 # The cross compiler and the C headers it needs, likewise.
 mcu-tools:

@@ -202,6 +202,10 @@ static int parse_options(int argc, char **argv, options *o)
 		o->format = !o->output_path && term_is_tty(1) ? FORMAT_ANSI : FORMAT_PPM;
 	if (o->row_end && o->format != FORMAT_PPM && o->format != FORMAT_IDS)
 		return usage_error("--rows writes PPM bands only%s", "");
+	if (o->spd && !RT_CORNER_SAMPLING)
+		return usage_error("--spd needs corner sampling, which this build leaves out "
+				   "(RT_CORNER_SAMPLING)%s",
+				   "");
 	if (o->format == FORMAT_IDS && o->spd)
 		return usage_error("--ids needs one eye ray per pixel, not --spd's corners%s", "");
 	return -1;

@@ -101,6 +101,24 @@ for cpu in m0 m3; do
 	check "$cpu: a missing file gives status 1" [ $? -eq 1 ]
 	check "$cpu: a missing file is named" grep -q '^rt: no-such-file.nff: cannot open' "$tmp/mcu.err"
 done
+# Every malformed and every odd-but-valid scene (tests/bad, tests/good) on the M0: the
+# same image, messages and exit status as the host's twin of the MCU build
+# (build/rt-fixed-mcu: the same capacities and switches).
+same=0
+for scene in tests/bad/*.nff tests/good/*.nff; do
+	run_mcu microbit build/mcu/rt-m0.elf "$tmp/mcu.out" "$tmp/mcu.err" -s 16x12 "$scene"
+	status=$?
+	./build/rt-fixed-mcu -s 16x12 "$scene" >"$tmp/host.out" 2>"$tmp/host.err"
+	host_status=$?
+	if [ "$status" -eq "$host_status" ] && cmp -s "$tmp/mcu.out" "$tmp/host.out" &&
+		cmp -s "$tmp/mcu.err" "$tmp/host.err"; then
+		same=$((same + 1))
+	else
+		bad "m0: $scene: status $status (host $host_status), or output or messages differ"
+	fi
+done
+check "m0: no malformed or odd scene was compared" [ "$same" -gt 100 ]
+
 # The build with a scene compiled in (make mcu-builtin: scenes/mcu-demo.nff by default)
 # renders it with no scene named, and a named file still wins.
 if [ -f build/mcu/rt-m0-builtin.elf ]; then
