@@ -559,7 +559,7 @@ FIXED_KERNEL int32_t fixed_times_reciprocal(int32_t x, fixed_reciprocal r)
 		if (r.shift == 32)
 			q = high;
 		else
-			q = high >> r.shift ? UINT32_MAX : high << (32 - r.shift) | low >> r.shift;
+			q = (high >> r.shift) ? UINT32_MAX : high << (32 - r.shift) | low >> r.shift;
 	}
 	if (q > (uint32_t)INT32_MAX)
 		q = (uint32_t)INT32_MAX;
