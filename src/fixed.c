@@ -86,6 +86,64 @@ int32_t fixed_sqrt2(int64_t w)
 	return w <= 0 ? 0 : fixed_saturate((int64_t)fixed_isqrt64((uint64_t)w));
 }
 
+/* 1/sqrt(w) as a fixed_reciprocal, without a square root or a division: w = t 4^k with t
+ * in [1/4, 1), so 2^(30 + k) / sqrt(w) = 2^30 y for y = 1/sqrt(t) in (1, 2], which Newton's
+ * y (3 - t y^2) / 2 refines from a table of 24 starting values (good to 2^-5) in three
+ * steps (2^-9, 2^-18, then the 2^-30 that 32-bit products keep). Each step is three
+ * 32 x 32 -> 64 products; dividing by a rounded root was a root and a division. */
+static uint32_t sqrt_mantissa(uint64_t w, int k)
+{
+	/* t = w / 4^k in Q0.32 (w's top 30 to 32 bits). */
+	return 2 * k >= 32 ? (uint32_t)(w >> (2 * k - 32)) : (uint32_t)w << (32 - 2 * k);
+}
+
+fixed_reciprocal fixed_reciprocal_sqrt2(int64_t w)
+{
+	static const uint16_t start[24] = {
+		63579, 60140, 57205, 54661, 52429, 50450, 48679, 47082, 45633, 44310, 43096, 41977,
+		40940, 39977, 39078, 38238, 37449, 36708, 36008, 35347, 34722, 34128, 33564, 33027,
+	}; /* 1/sqrt(t) in Q1.15 at the middle of t's 24 intervals of 1/32 from 1/4 */
+	fixed_reciprocal r;
+	uint32_t t, y, low, high, ty;
+	int k, i;
+	r.negative = 0;
+	if (w <= 0) { /* as fixed_reciprocal_of(0): quotients saturate */
+		r.scale = 0;
+		r.shift = 15;
+		return r;
+	}
+	k = (fixed_bit_length((uint64_t)w) + 1) / 2; /* sqrt(w) in [2^(k-1), 2^k) */
+	t = sqrt_mantissa((uint64_t)w, k);
+	y = (uint32_t)start[(t >> 27) - 8] << 15; /* Q2.30 */
+	for (i = 0; i < 3; i++) {
+		fixed_umul64_parts(t, y, &low, &ty);    /* t y in Q2.30 */
+		fixed_umul64_parts(ty, y, &low, &high); /* t y^2 in Q4.60 */
+		/* 3 - t y^2 in Q2.30 (t y^2 is within 2^-4 of 1 from the first step on). */
+		fixed_umul64_parts(y, 0xC0000000u - ((high << 2) | (low >> 30)), &low, &high);
+		y = (high << 1) | (low >> 31); /* y (3 - t y^2) / 2 in Q2.30 */
+	}
+	r.scale = y;
+	r.shift = 14 + k;
+	return r;
+}
+
+int32_t fixed_sqrt_by_reciprocal(int64_t w, fixed_reciprocal r)
+{
+	/* sqrt(w) = t y 2^k: the product t y (Q2.62, below 2^62) over 2^s, s = 62 - k, in
+	 * 32-bit halves (s is 31 to 61 for w below 2^62). q is the quotient by 2^(s - 1),
+	 * whose last bit rounds. */
+	int s = 76 - r.shift;
+	uint32_t low, high, q;
+	if (w <= 0)
+		return 0;
+	if (s <= 30)
+		return FIXED_MAX; /* w >= 2^62: a root of 2^31 or more */
+	fixed_umul64_parts(sqrt_mantissa((uint64_t)w, r.shift - 14), r.scale, &low, &high);
+	q = s > 32 ? high >> (s - 33) : high << (33 - s) | low >> (s - 1);
+	q = (q >> 1) + (q & 1);
+	return q > (uint32_t)INT32_MAX ? FIXED_MAX : (int32_t)q;
+}
+
 int32_t fixed_ratio2(int64_t a, int64_t b)
 {
 	int negative = (a < 0) != (b < 0);

@@ -574,6 +574,12 @@ uint64_t fixed_isqrt64(uint64_t x);
 int32_t fixed_sqrt(int32_t a);      /* of Q16.16 */
 int32_t fixed_sqrt2(int64_t w);     /* of Q32.32, as Q16.16 */
 int32_t fixed_ratio2(int64_t a, int64_t b); /* a / b of two Q32.32, as Q16.16 */
+/* For dividing by sqrt(w) (w Q32.32 > 0, a squared length): a reciprocal as from
+ * fixed_reciprocal_of, good to 2^-29 of the root's exact value (not of a rounded one);
+ * quotients saturate for w <= 0. fixed_sqrt_by_reciprocal gives sqrt(w) from it, within
+ * an LSB plus 2^-29 of it (tests/test_fixed.c). */
+fixed_reciprocal fixed_reciprocal_sqrt2(int64_t w);
+int32_t fixed_sqrt_by_reciprocal(int64_t w, fixed_reciprocal r);
 int32_t fixed_exp(int32_t x);       /* e^x */
 int32_t fixed_pow(int32_t x, int32_t y); /* x^y for 0 <= x <= 1, y >= 0 */
 int32_t fixed_tan(int32_t x);       /* tan x for 0 <= x < pi/2 (radians) */
