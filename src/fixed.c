@@ -99,10 +99,10 @@ static uint32_t sqrt_mantissa(uint64_t w, int k)
 
 fixed_reciprocal fixed_reciprocal_sqrt2(int64_t w)
 {
-	static const uint16_t start[24] = {
-		63579, 60140, 57205, 54661, 52429, 50450, 48679, 47082, 45633, 44310, 43096, 41977,
-		40940, 39977, 39078, 38238, 37449, 36708, 36008, 35347, 34722, 34128, 33564, 33027,
-	}; /* 1/sqrt(t) in Q1.15 at the middle of t's 24 intervals of 1/32 from 1/4 */
+	static const uint8_t start[24] = {
+		241, 214, 191, 171, 154, 138, 124, 112, 101, 90, 81, 72,
+		64,  56,  49,  43,  37,  31,  25,  20,  15,  11, 6,  2,
+	}; /* 1/sqrt(t) - 1 in Q0.8 at the middle of t's 24 intervals of 1/32 from 1/4 */
 	fixed_reciprocal r;
 	uint32_t t, y, low, high, ty;
 	int k, i;
@@ -114,7 +114,7 @@ fixed_reciprocal fixed_reciprocal_sqrt2(int64_t w)
 	}
 	k = (fixed_bit_length((uint64_t)w) + 1) / 2; /* sqrt(w) in [2^(k-1), 2^k) */
 	t = sqrt_mantissa((uint64_t)w, k);
-	y = (uint32_t)start[(t >> 27) - 8] << 15; /* Q2.30 */
+	y = (256u + start[(t >> 27) - 8]) << 22; /* Q2.30 */
 	for (i = 0; i < 3; i++) {
 		fixed_umul64_parts(t, y, &low, &ty);    /* t y in Q2.30 */
 		fixed_umul64_parts(ty, y, &low, &high); /* t y^2 in Q4.60 */

@@ -159,7 +159,10 @@ static vec3 shade_lights(tracer *t, const hit *h, const material *mat, vec3 mirr
 		}
 		if (pass <= REAL_C(0.0))
 			continue;
-		sum = vec_add(sum, vec_scale(lit, pass));
+		/* Nothing in the way (the usual case) passes all of it: no products. */
+		if (pass != REAL_C(1.0))
+			lit = vec_scale(lit, pass);
+		sum = vec_add(sum, lit);
 	}
 	return sum;
 }
