@@ -115,7 +115,9 @@ FIXED_PARTS void fixed_umul64_parts(uint32_t a, uint32_t b, uint32_t *low, uint3
 	*low = product;
 	*high = b;
 #else
-	uint64_t product = fixed_umul64_narrow(a, b);
+	/* Elsewhere the compiler's own product where it is cheap (a Cortex-M3 has one
+	 * instruction for it), the 16 x 16 form on a narrow core without GCC. */
+	uint64_t product = FIXED_NARROW ? fixed_umul64_narrow(a, b) : (uint64_t)a * b;
 	*low = (uint32_t)product;
 	*high = (uint32_t)(product >> 32);
 #endif
@@ -164,7 +166,7 @@ FIXED_PARTS void fixed_wide_mul_parts(int32_t a, int32_t b, uint32_t *low, int32
 	*low = product;
 	*high = b;
 #else
-	int64_t product = fixed_wide_mul_narrow(a, b);
+	int64_t product = FIXED_NARROW ? fixed_wide_mul_narrow(a, b) : (int64_t)a * b;
 	*low = (uint32_t)product;
 	*high = (int32_t)(product >> 32);
 #endif
