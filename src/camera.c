@@ -33,9 +33,11 @@ ray camera_ray(const camera *c, real x, real y)
 	 * rounding across the row: in Q16.16 several pixels at the far edge. The reciprocal
 	 * of the width keeps 31 bits in fixed point, and is the division in floating point.) */
 	real width = real_from_int(c->width);
-	real u = real_mul(real_times_reciprocal(real_mul(REAL_C(2.0), x) - width, c->per_width),
+	/* 2x as x + x: the same number in every type (pixel coordinates are far below
+	 * overflow), and no multiply. */
+	real u = real_mul(real_times_reciprocal(x + x - width, c->per_width),
 			  c->half_width);
-	real v = real_mul(real_times_reciprocal(real_from_int(c->height) - real_mul(REAL_C(2.0), y),
+	real v = real_mul(real_times_reciprocal(real_from_int(c->height) - (y + y),
 						c->per_width),
 			  c->half_width);
 	ray r;

@@ -86,6 +86,64 @@ int32_t fixed_sqrt2(int64_t w)
 	return w <= 0 ? 0 : fixed_saturate((int64_t)fixed_isqrt64((uint64_t)w));
 }
 
+/* 1/sqrt(w) as a fixed_reciprocal, without a square root or a division: w = t 4^k with t
+ * in [1/4, 1), so 2^(30 + k) / sqrt(w) = 2^30 y for y = 1/sqrt(t) in (1, 2], which Newton's
+ * y (3 - t y^2) / 2 refines from a table of 24 starting values (good to 2^-5) in three
+ * steps (2^-9, 2^-18, then the 2^-30 that 32-bit products keep). Each step is three
+ * 32 x 32 -> 64 products; dividing by a rounded root was a root and a division. */
+static uint32_t sqrt_mantissa(uint64_t w, int k)
+{
+	/* t = w / 4^k in Q0.32 (w's top 30 to 32 bits). */
+	return 2 * k >= 32 ? (uint32_t)(w >> (2 * k - 32)) : (uint32_t)w << (32 - 2 * k);
+}
+
+fixed_reciprocal fixed_reciprocal_sqrt2(int64_t w)
+{
+	static const uint8_t start[24] = {
+		241, 214, 191, 171, 154, 138, 124, 112, 101, 90, 81, 72,
+		64,  56,  49,  43,  37,  31,  25,  20,  15,  11, 6,  2,
+	}; /* 1/sqrt(t) - 1 in Q0.8 at the middle of t's 24 intervals of 1/32 from 1/4 */
+	fixed_reciprocal r;
+	uint32_t t, y, low, high, ty;
+	int k, i;
+	r.negative = 0;
+	if (w <= 0) { /* as fixed_reciprocal_of(0): quotients saturate */
+		r.scale = 0;
+		r.shift = 15;
+		return r;
+	}
+	k = (fixed_bit_length((uint64_t)w) + 1) / 2; /* sqrt(w) in [2^(k-1), 2^k) */
+	t = sqrt_mantissa((uint64_t)w, k);
+	y = (256u + start[(t >> 27) - 8]) << 22; /* Q2.30 */
+	for (i = 0; i < 3; i++) {
+		fixed_umul64_parts(t, y, &low, &ty);    /* t y in Q2.30 */
+		fixed_umul64_parts(ty, y, &low, &high); /* t y^2 in Q4.60 */
+		/* 3 - t y^2 in Q2.30 (t y^2 is within 2^-4 of 1 from the first step on). */
+		fixed_umul64_parts(y, 0xC0000000u - ((high << 2) | (low >> 30)), &low, &high);
+		y = (high << 1) | (low >> 31); /* y (3 - t y^2) / 2 in Q2.30 */
+	}
+	r.scale = y;
+	r.shift = 14 + k;
+	return r;
+}
+
+int32_t fixed_sqrt_by_reciprocal(int64_t w, fixed_reciprocal r)
+{
+	/* sqrt(w) = t y 2^k: the product t y (Q2.62, below 2^62) over 2^s, s = 62 - k, in
+	 * 32-bit halves (s is 31 to 61 for w below 2^62). q is the quotient by 2^(s - 1),
+	 * whose last bit rounds. */
+	int s = 76 - r.shift;
+	uint32_t low, high, q;
+	if (w <= 0)
+		return 0;
+	if (s <= 30)
+		return FIXED_MAX; /* w >= 2^62: a root of 2^31 or more */
+	fixed_umul64_parts(sqrt_mantissa((uint64_t)w, r.shift - 14), r.scale, &low, &high);
+	q = s > 32 ? high >> (s - 33) : high << (33 - s) | low >> (s - 1);
+	q = (q >> 1) + (q & 1);
+	return q > (uint32_t)INT32_MAX ? FIXED_MAX : (int32_t)q;
+}
+
 int32_t fixed_ratio2(int64_t a, int64_t b)
 {
 	int negative = (a < 0) != (b < 0);
@@ -104,31 +162,44 @@ int32_t fixed_ratio2(int64_t a, int64_t b)
 }
 
 
+/* The product of two Q2.30 numbers (each below 2^32), truncated to Q2.30: 32-bit halves,
+ * not a 64 x 64 multiply (a library call on small cores). */
+static uint32_t mul_q30(uint32_t a, uint32_t b)
+{
+	uint32_t low, high;
+	fixed_umul64_parts(a, b, &low, &high);
+	return (high << 2) | (low >> 30);
+}
+
 /* 2^y for y in Q16.16, as Q16.16: 2^k by shifting, 2^f for the fraction f by the
- * Taylor series of e^(f ln 2) in Q2.30 (error below 1e-7 for f < 1). */
+ * Taylor series of e^(f ln 2) in Q2.30 (error below 1e-7 for f < 1). Every term and sum
+ * is below 2^31, so the series runs in 32-bit numbers. */
 static int32_t exp2_fixed(int64_t y)
 {
-	static const int64_t inverse_factorial[] = {
+	static const uint32_t inverse_factorial[] = {
 		1073741824, 1073741824, 536870912, 178956971, 44739243, 8947849, 1491308, 213044, 26631,
 	}; /* 1/k! in Q2.30, k = 0..8 */
-	const int64_t ln2 = 744261118; /* ln 2 in Q2.30 */
-	int64_t k, f, u, sum;
+	const uint32_t ln2 = 744261118; /* ln 2 in Q2.30 */
+	int32_t v, k;
+	uint32_t u, sum;
 	int i;
 	if (y >= (int64_t)15 * 65536)
 		return FIXED_MAX;
 	if (y < (int64_t)-17 * 65536)
 		return 0;
-	k = y >= 0 ? y / 65536 : -((-y + 65535) / 65536); /* floor */
-	f = y - k * 65536;          /* [0, 1) in Q16.16 */
-	u = (f << 14) * ln2 >> 30;  /* f ln 2 in Q2.30 */
+	v = (int32_t)y;
+	k = v >= 0 ? v / 65536 : -((-v + 65535) / 65536); /* floor, in [-17, 14] */
+	u = mul_q30((uint32_t)(v - k * 65536) << 14, ln2); /* f ln 2 in Q2.30 */
 	sum = inverse_factorial[8];
 	for (i = 7; i >= 0; i--)
-		sum = (sum * u >> 30) + inverse_factorial[i];
+		sum = mul_q30(sum, u) + inverse_factorial[i];
 	/* sum = 2^f in Q2.30; to Q16.16 and times 2^k, rounding. */
-	if (k >= 0)
-		return fixed_saturate(((sum >> 13) + 1) >> 1 << k);
-	k = 14 - k; /* total right shift */
-	return k >= 62 ? 0 : (int32_t)((sum + ((int64_t)1 << (k - 1))) >> k);
+	if (k >= 0) {
+		uint32_t whole = ((sum >> 13) + 1) >> 1;
+		return whole > ((uint32_t)INT32_MAX >> k) ? FIXED_MAX : (int32_t)(whole << k);
+	}
+	k = 14 - k; /* total right shift, 15 to 31 */
+	return (int32_t)((sum + ((uint32_t)1 << (k - 1))) >> k);
 }
 
 int32_t fixed_exp(int32_t x)
@@ -139,20 +210,17 @@ int32_t fixed_exp(int32_t x)
 
 /* log2 x for x > 0 (Q16.16), in Q8.24: the integer part from the top bit, then one
  * fraction bit per squaring of the mantissa (in Q2.30). 24 bits keep x^y good to a few
- * LSB even for Phong exponents in the hundreds. */
-static int64_t log2_fixed(int32_t x)
+ * LSB even for Phong exponents in the hundreds. The result is within +-2^28: 32 bits. */
+static int32_t log2_fixed(int32_t x)
 {
-	int top = 30, i;
-	int64_t m, result;
-	while (top > 0 && !(x & ((int32_t)1 << top)))
-		top--; /* x in [2^top, 2^(top+1)) */
-	m = (int64_t)x << (30 - top);
-	result = (int64_t)(top - 16) * ((int64_t)1 << 24);
+	int top = fixed_bit_length((uint32_t)x) - 1, i; /* x in [2^top, 2^(top+1)) */
+	uint32_t m = (uint32_t)x << (30 - top);
+	int32_t result = (top - 16) * ((int32_t)1 << 24);
 	for (i = 23; i >= 0; i--) {
-		m = (int64_t)(fixed_umul64((uint32_t)m, (uint32_t)m) >> 30); /* 0 < m < 2^31 */
-		if (m >= ((int64_t)2 << 30)) {
+		m = mul_q30(m, m); /* below 2^32: m < 2^31 before */
+		if (m >= (uint32_t)1 << 31) {
 			m >>= 1;
-			result += (int64_t)1 << i;
+			result += (int32_t)1 << i;
 		}
 	}
 	return result;
@@ -160,14 +228,12 @@ static int64_t log2_fixed(int32_t x)
 
 int32_t fixed_pow(int32_t x, int32_t y)
 {
-	int64_t e;
 	if (y == 0)
 		return FIXED_ONE;
 	if (x <= 0)
 		return 0;
 	/* y log2 x in Q16.16; log2 x (Q8.24, at most 15 in size) times y fits 64 bits. */
-	e = log2_fixed(x) * y >> 24;
-	return exp2_fixed(e);
+	return exp2_fixed(fixed_wide_mul(log2_fixed(x), y) >> 24);
 }
 
 int32_t fixed_tan(int32_t x)

@@ -671,14 +671,17 @@ static int parse_cone(parser *p)
 static int add_halfspace(parser *p, vec3 n, real d, int line)
 {
 	scene *s = p->s;
-	real length = vec_length(n);
-	if (!(length > REAL_C(0.0)))
+	real2 length2 = vec_dot2(n, n);
+	real_reciprocal per_length;
+	if (!(length2 > 0))
 		return fail(&p->lx, p->lx.tok_line, "polyhedron: a plane normal is zero");
 	if (s->plane_count == RT_MAX_PLANES)
 		return capacity_error(p, line, "polyhedron planes in the scene", "RT_MAX_PLANES",
 				      RT_MAX_PLANES);
-	s->planes[s->plane_count].normal = vec_div(n, length);
-	s->planes[s->plane_count].offset = real_div(d, length);
+	/* Divided by the length as vec_normalize does (one reciprocal for all four). */
+	per_length = real2_reciprocal_sqrt(length2);
+	s->planes[s->plane_count].normal = vec_times_reciprocal(n, per_length);
+	s->planes[s->plane_count].offset = real_times_reciprocal(d, per_length);
 	s->plane_count++;
 	return 1;
 }

@@ -103,6 +103,10 @@ typedef int64_t real2; /* Q32.32: squares and products of lengths */
 typedef fixed_reciprocal real_reciprocal;
 #define real_reciprocal_of(d) fixed_reciprocal_of(d)
 #define real_times_reciprocal(x, r) fixed_times_reciprocal((x), (r))
+/* Dividing by a length sqrt(w): the reciprocal straight from w (Newton, no root and no
+ * division), and the length from it. */
+#define real2_reciprocal_sqrt(w) fixed_reciprocal_sqrt2(w)
+#define real2_sqrt_by(w, r) fixed_sqrt_by_reciprocal((w), (r))
 /* How far b^2 - w can be off through rounding, for b a rounded dot product (half an LSB:
  * b^2 off by |b| in Q32.32) and w a real2 scaled by a near-one factor (real2_scale
  * truncates: off by |w| / 2^16), with room to spare: errors here are absolute. */
@@ -188,6 +192,9 @@ static inline real real_ldexp_(real x, int e)
 typedef real real_reciprocal;
 #define real_reciprocal_of(d) (d)
 #define real_times_reciprocal(x, r) real_div((x), (r))
+/* Dividing by a length sqrt(w): the root is the divisor, and the length. */
+#define real2_reciprocal_sqrt(w) real2_sqrt(w)
+#define real2_sqrt_by(w, r) ((void)(w), (r))
 /* How far b^2 - w can be off through rounding: relative errors, bounded generously. */
 #define real2_error_bound(b, w) ((real_mul2((b), (b)) + real_fabs(w)) * REAL_OFFSET)
 #endif

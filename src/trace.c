@@ -115,12 +115,18 @@ static vec3 shade_lights(tracer *t, const hit *h, const material *mat, vec3 mirr
 	for (i = 0; i < s->light_count; i++) {
 		const light *l = &s->lights[i];
 		vec3 to_light = vec_sub(l->position, h->point);
-		real distance = vec_length(to_light), diffuse, highlight, pass;
+		real2 distance2 = vec_dot2(to_light, to_light);
+		real distance, diffuse, highlight, pass;
+		real_reciprocal per_distance;
 		vec3 dir, lit;
 		ray shadow;
-		if (!(distance > REAL_C(0.0)))
+		if (!(distance2 > 0))
 			continue;
-		dir = vec_div(to_light, distance);
+		/* The distance and the direction from one reciprocal square root (fixed point:
+		 * no root and no division). */
+		per_distance = real2_reciprocal_sqrt(distance2);
+		distance = real2_sqrt_by(distance2, per_distance);
+		dir = vec_times_reciprocal(to_light, per_distance);
 		/* A light behind the surface sends no shadow ray (SPD rule). */
 		if (vec_dot(h->normal, dir) <= REAL_C(0.0))
 			continue;
@@ -153,7 +159,10 @@ static vec3 shade_lights(tracer *t, const hit *h, const material *mat, vec3 mirr
 		}
 		if (pass <= REAL_C(0.0))
 			continue;
-		sum = vec_add(sum, vec_scale(lit, pass));
+		/* Nothing in the way (the usual case) passes all of it: no products. */
+		if (pass != REAL_C(1.0))
+			lit = vec_scale(lit, pass);
+		sum = vec_add(sum, lit);
 	}
 	return sum;
 }

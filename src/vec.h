@@ -37,6 +37,7 @@ VEC_FUNCTION vec3 vec_cross(vec3 a, vec3 b);
 VEC_FUNCTION real2 vec_dot2(vec3 a, vec3 b);
 VEC_FUNCTION real vec_length(vec3 a);
 VEC_FUNCTION vec3 vec_div(vec3 a, real s);
+VEC_FUNCTION vec3 vec_times_reciprocal(vec3 a, real_reciprocal r);
 VEC_FUNCTION vec3 vec_normalize(vec3 a);
 VEC_FUNCTION real vec_max_abs(vec3 a);
 
@@ -103,16 +104,23 @@ VEC_FUNCTION real vec_length(vec3 a) { return real2_sqrt(vec_dot2(a, a)); }
  * Q16.16's 16: 1/2560 would be 26 LSB, off by 1.6%), so one division, not three. */
 VEC_FUNCTION vec3 vec_div(vec3 a, real s)
 {
-	real_reciprocal r = real_reciprocal_of(s);
+	return vec_times_reciprocal(a, real_reciprocal_of(s));
+}
+
+/* a divided by the number whose reciprocal r is. */
+VEC_FUNCTION vec3 vec_times_reciprocal(vec3 a, real_reciprocal r)
+{
 	return vec_make(real_times_reciprocal(a.x, r), real_times_reciprocal(a.y, r),
 			real_times_reciprocal(a.z, r));
 }
 
-/* Unit vector along a; the zero vector stays zero (callers reject it first). */
+/* Unit vector along a; the zero vector stays zero (callers reject it first). Divided by
+ * its exact length, not a rounded one: fixed point takes the reciprocal straight from
+ * the squared length (real2_reciprocal_sqrt), floating point divides by the root. */
 VEC_FUNCTION vec3 vec_normalize(vec3 a)
 {
-	real len = vec_length(a);
-	return len > REAL_C(0.0) ? vec_div(a, len) : a;
+	real2 w = vec_dot2(a, a);
+	return w > 0 ? vec_times_reciprocal(a, real2_reciprocal_sqrt(w)) : a;
 }
 
 /* Largest absolute component: the scale of a point's rounding error. */

@@ -80,6 +80,41 @@ static void test_roots(void)
 	/* Q04: (1,1,1)/sqrt 3 has 37837 LSB per component. */
 	third = fixed_div(Q(1.0), fixed_sqrt(Q(3.0)));
 	CHECK_INT(third, 37837);
+	/* The reciprocal square root (Newton, no root or division): unit vectors' components
+	 * are the exact quotients rounded, and the length from it the rounded root. */
+	CHECK_INT(fixed_times_reciprocal(Q(1.0), fixed_reciprocal_sqrt2((int64_t)3 << 32)), 37837);
+	CHECK_INT(fixed_times_reciprocal(Q(3.0), fixed_reciprocal_sqrt2((int64_t)25 << 32)),
+		  Q(0.6));
+	CHECK_INT(fixed_sqrt_by_reciprocal((int64_t)9 << 32,
+					   fixed_reciprocal_sqrt2((int64_t)9 << 32)),
+		  Q(3.0));
+	CHECK_INT(fixed_times_reciprocal(Q(2.0), fixed_reciprocal_sqrt2(0)), FIXED_MAX);
+	CHECK_INT(fixed_sqrt_by_reciprocal(0, fixed_reciprocal_sqrt2(0)), 0);
+	{
+		/* Seeded random vectors of every size: each component over the length within
+		 * 0.5 LSB (rounding) plus 2^-10 LSB (the reciprocal's 2^-29); the length within
+		 * an LSB plus 2^-29 of it (4 LSB at 2^31). */
+		uint32_t state = 7u;
+		int i, wrong = 0;
+		for (i = 0; i < 20000; i++) {
+			int shift = (int)(next_random(&state) % 31u);
+			int32_t x = (int32_t)(next_random(&state) >> 2) >> shift;
+			int32_t y = (int32_t)(next_random(&state) >> 2) >> shift;
+			int32_t z = -((int32_t)(next_random(&state) >> 2) >> shift);
+			int64_t w = (int64_t)x * x + (int64_t)y * y + (int64_t)z * z;
+			fixed_reciprocal r;
+			long double length;
+			if (w <= 0 || w >= (int64_t)1 << 62)
+				continue;
+			r = fixed_reciprocal_sqrt2(w);
+			length = sqrtl((long double)w);
+			if (fabsl(fixed_times_reciprocal(z, r) - z * 65536.0L / length) >
+				    0.5L + 1.0L / 1024 ||
+			    fabsl(fixed_sqrt_by_reciprocal(w, r) - length) > 1.0L + length / (1L << 29))
+				wrong++;
+		}
+		CHECK_INT(wrong, 0);
+	}
 }
 
 static void test_exp_pow_tan(void)
