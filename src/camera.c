@@ -3,8 +3,6 @@
  * See LICENSE for copyright and licence. */
 #include "camera.h"
 
-#define DEGREES_TO_RADIANS REAL_C(0.017453292519943295)
-
 int camera_init(camera *c, const view *v, int width, int height)
 {
 	vec3 forward = vec_sub(v->at, v->from);
@@ -19,7 +17,7 @@ int camera_init(camera *c, const view *v, int width, int height)
 	c->right = vec_normalize(right);
 	c->up = vec_cross(c->right, c->forward);
 	c->eye = v->from;
-	c->half_width = real_tan(real_mul(real_mul(v->angle, REAL_C(0.5)), DEGREES_TO_RADIANS));
+	c->half_width = real_tan_degrees(real_mul(v->angle, REAL_C(0.5)));
 	c->width = width;
 	c->height = height;
 	c->per_width = real_reciprocal_of(real_from_int(width));

@@ -236,10 +236,16 @@ int32_t fixed_pow(int32_t x, int32_t y)
 	return exp2_fixed(fixed_wide_mul(log2_fixed(x), y) >> 24);
 }
 
-int32_t fixed_tan(int32_t x)
+/* pi / 180 in Q20.44: degrees in Q16.16 times this, shifted by 32, are radians in Q4.28.
+ * (pi / 180 in Q16.16 keeps only 11 bits: a field of view 1.8e-4 too wide.) */
+#define RADIANS_PER_DEGREE_Q44 INT64_C(307041569098)
+
+int32_t fixed_tan_degrees(int32_t degrees)
 {
-	/* sin and cos by their nested Taylor series in Q4.28 (x^2 reaches 2.47 at pi/2). */
-	int64_t t = (int64_t)x * 4096, t2 = t * t >> 28, s = (int64_t)1 << 28, c = (int64_t)1 << 28;
+	/* sin and cos by their nested Taylor series in Q4.28 (x^2 reaches 2.47 at pi/2);
+	 * degrees < 90 keep the product below 2^61. */
+	int64_t t = fixed_round_div((int64_t)degrees * RADIANS_PER_DEGREE_Q44, INT64_C(1) << 32);
+	int64_t t2 = t * t >> 28, s = (int64_t)1 << 28, c = (int64_t)1 << 28;
 	int k;
 	for (k = 15; k >= 3; k -= 2)
 		s = ((int64_t)1 << 28) - fixed_div64(t2 * s >> 28, (int64_t)k * (k - 1));

@@ -585,7 +585,7 @@ fixed_reciprocal fixed_reciprocal_sqrt2(int64_t w);
 int32_t fixed_sqrt_by_reciprocal(int64_t w, fixed_reciprocal r);
 int32_t fixed_exp(int32_t x);       /* e^x */
 int32_t fixed_pow(int32_t x, int32_t y); /* x^y for 0 <= x <= 1, y >= 0 */
-int32_t fixed_tan(int32_t x);       /* tan x for 0 <= x < pi/2 (radians) */
+int32_t fixed_tan_degrees(int32_t degrees); /* tan for 0 <= degrees < 90 */
 
 /* Reads a decimal number (sign, digits, point, exponent) as Q16.16 times 2^shift,
  * rounded; *end is set after the last character used (to s when there is no number).

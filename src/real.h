@@ -40,7 +40,7 @@ typedef float real;
 #define real_fabs fabsf
 #define real_pow powf
 #define real_exp expf
-#define real_tan tanf
+#define real_tan_degrees(x) tanf((x) * REAL_C(0.017453292519943295))
 #define real_isfinite(x) isfinite(x)
 #define real_parse(s, end) strtof((s), (end))
 #elif defined(RT_REAL_DOUBLE)
@@ -53,7 +53,7 @@ typedef double real;
 #define real_fabs fabs
 #define real_pow pow
 #define real_exp exp
-#define real_tan tan
+#define real_tan_degrees(x) tan((x) * REAL_C(0.017453292519943295))
 #define real_isfinite(x) isfinite(x)
 #define real_parse(s, end) strtod((s), (end))
 #elif defined(RT_REAL_LONG_DOUBLE)
@@ -66,7 +66,7 @@ typedef long double real;
 #define real_fabs fabsl
 #define real_pow powl
 #define real_exp expl
-#define real_tan tanl
+#define real_tan_degrees(x) tanl((x) * REAL_C(0.017453292519943295769))
 #define real_isfinite(x) isfinite(x)
 #define real_parse(s, end) strtold((s), (end))
 #elif defined(RT_REAL_FIXED)
@@ -88,7 +88,7 @@ typedef int64_t real2; /* Q32.32: squares and products of lengths */
 #define real_fabs(a) fixed_abs(a)
 #define real_pow(a, b) fixed_pow((a), (b))
 #define real_exp(a) fixed_exp(a)
-#define real_tan(a) fixed_tan(a)
+#define real_tan_degrees(a) fixed_tan_degrees(a)
 #define real_isfinite(x) ((void)(x), 1)
 #define real_from_int(i) fixed_from_int(i)
 #define real_to_int(x) ((x) >> 16)

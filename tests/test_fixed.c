@@ -143,9 +143,12 @@ static void test_exp_pow_tan(void)
 	CHECK_INT(fixed_pow(0, Q(3.0)), 0);
 	CHECK_INT(fixed_pow(Q(0.3), 0), Q(1.0));
 	/* tan of half the field of view, to a few LSB. */
-	CHECK_NEAR(to_double(fixed_tan(Q(0.4537856))), tan(to_double(Q(0.4537856))),
-		   2.0 / 65536.0);
-	CHECK_NEAR(to_double(fixed_tan(Q(1.0))), tan(1.0), 8.0 / 65536.0);
+	CHECK_NEAR(to_double(fixed_tan_degrees(Q(26.0))), tan(26.0 * 3.14159265358979323846 / 180.0), 1.0 / 65536.0);
+	CHECK_NEAR(to_double(fixed_tan_degrees(Q(57.29578))), tan(1.0), 8.0 / 65536.0);
+	/* The angle is converted at 2^-28: tan 26.565051177 degrees (scenes/hard/grid-edges.nff,
+	 * half its field of view) is 1/2 to the last bit, where pi / 180 as Q16.16 gave 4 LSB
+	 * too many. */
+	CHECK_INT(fixed_tan_degrees(Q(26.56505117707799)), Q(0.5));
 }
 
 static void test_parsing(void)
