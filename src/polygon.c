@@ -112,8 +112,16 @@ int polygon_intersect(const scene *s, const object *o, const ray *r, real tmin, 
 		return 0;
 	p = vec_madd(r->origin, t, r->dir);
 	{
+		/* The point is tested snapped to a grid a little coarser than its rounding
+		 * error: a ray meant exactly through a shared edge or vertex then lands exactly
+		 * on it, whatever the number type, and the half-open rule settles it the same
+		 * way in all of them (without the snap, by which way p happened to round). The
+		 * grid's powers of two keep every exactly placed point on it. */
+		real grid = real_snap_grid(real_max(real_max(vec_max_abs(p), real_fabs(t)),
+						    REAL_C(0.0009765625)));
 		vec2 q = polygon_project(p, poly->axis);
-		if (!polygon_contains_2d(s->projected + poly->first, poly->count, q.u, q.v))
+		if (!polygon_contains_2d(s->projected + poly->first, poly->count,
+					 real_snap(q.u, grid), real_snap(q.v, grid)))
 			return 0;
 	}
 	if (h) {

@@ -29,13 +29,23 @@
  * REAL_C wraps every literal so tables compile in every build.
  * REAL_OFFSET is the relative size of the offset that moves a secondary ray's origin
  * off the surface (times max(1, |p|inf, t)): a few thousand ulps of the hit point,
- * well above the hit point's rounding error and well below any feature size. */
+ * well above the hit point's rounding error and well below any feature size.
+ * REAL_SNAP_BITS sets the grid the polygon test snaps hit points to (real_snap_grid):
+ * 2^-REAL_SNAP_BITS times the hit point's scale, rounded down to a power of two, a wide
+ * margin over the hit point's own error (scenes/hard/grid-edges.nff: at most 2^-25 of
+ * the scale in float, 2^-53 in double). Long double snaps as coarsely as double: a
+ * scene's decimal numbers (53.13010235415598 for 2 atan(1/2) degrees) are themselves off
+ * by some 2^-56, which long double would otherwise see. */
 #if defined(RT_REAL_FLOAT)
 typedef float real;
 #define REAL_NAME "float"
 #define REAL_C(x) ((float)(x))
 #define REAL_MAX FLT_MAX
 #define REAL_OFFSET REAL_C(6.103515625e-05) /* 2^-14 = 512 ulp */
+#define REAL_SNAP_BITS 19 /* grid 2^-19 = 16 ulp of the scale */
+#define real_floor floorf
+#define real_scalbn scalbnf
+#define real_ilogb ilogbf
 #define real_sqrt sqrtf
 #define real_fabs fabsf
 #define real_pow powf
@@ -49,6 +59,10 @@ typedef double real;
 #define REAL_C(x) ((double)(x))
 #define REAL_MAX DBL_MAX
 #define REAL_OFFSET REAL_C(9.313225746154785e-10) /* 2^-30 = 2^22 ulp */
+#define REAL_SNAP_BITS 47 /* grid 2^-47 = 32 ulp */
+#define real_floor floor
+#define real_scalbn scalbn
+#define real_ilogb ilogb
 #define real_sqrt sqrt
 #define real_fabs fabs
 #define real_pow pow
@@ -62,11 +76,15 @@ typedef long double real;
 #define REAL_C(x) ((long double)(x))
 #define REAL_MAX LDBL_MAX
 #define REAL_OFFSET REAL_C(9.094947017729282e-13) /* 2^-40 = 2^23 ulp */
+#define REAL_SNAP_BITS 47 /* as double's: see below */
+#define real_floor floorl
+#define real_scalbn scalbnl
+#define real_ilogb ilogbl
 #define real_sqrt sqrtl
 #define real_fabs fabsl
 #define real_pow powl
 #define real_exp expl
-#define real_tan_degrees(x) tanl((x) * REAL_C(0.017453292519943295769))
+#define real_tan_degrees(x) tanl((x) * 0.0174532925199432957692369L) /* pi / 180 */
 #define real_isfinite(x) isfinite(x)
 #define real_parse(s, end) strtold((s), (end))
 #elif defined(RT_REAL_FIXED)
@@ -122,6 +140,19 @@ typedef fixed_reciprocal real_reciprocal;
  * plus 16 LSB). Measured on scenes/showpiece.nff: 2^-15 left acne, 2^-13 none on
  * spheres and polyhedra. Q2.30 directions would bring this down to a few LSB. */
 #define real_surface_offset(scale) ((real)16 + ((scale) >> 13))
+/* The hit point's own error is t * 2^-17 from the direction plus a couple of LSB: the
+ * snapping grid is the power of two at or below 4 LSB + 2^-14 of the scale (measured on
+ * scenes/hard/grid-edges.nff: errors up to 3,089 LSB at a scale of 2^28.2, grid 2^14). */
+static inline real real_snap_grid(real scale)
+{
+	return (real)1 << (fixed_bit_length((uint64_t)(4 + (scale >> 14))) - 1);
+}
+/* x rounded to a multiple of grid (a power of two), halves upwards. */
+static inline real real_snap(real x, real grid)
+{
+	real up = x + grid / 2;
+	return up - (up & (grid - 1));
+}
 #define real_from_text(text, shift, out) fixed_from_text((text), (shift), (out))
 #define REAL_RANGE_TEXT "the range of Q16.16 fixed point"
 #define real_format(x, shift, buf, size) fixed_format((x), (shift), (buf), (size))
@@ -140,6 +171,17 @@ typedef real real2; /* floating point needs no wider type for squares */
 #define REAL_FAR REAL_C(1e15) /* a length beyond any scene's coordinates */
 #define real_ldexp(x, e) real_ldexp_((x), (e))
 #define real_surface_offset(scale) real_mul(REAL_OFFSET, (scale))
+/* The largest power of two at or below 2^-REAL_SNAP_BITS times scale (> 0), and x
+ * rounded to a multiple of it: the quotient and product are exact, and |x| <= scale keeps
+ * x / grid below 2^(REAL_SNAP_BITS + 1), where adding a half rounds exactly too. */
+static inline real real_snap_grid(real scale)
+{
+	return real_scalbn(REAL_C(1.0), real_ilogb(scale) - REAL_SNAP_BITS);
+}
+static inline real real_snap(real x, real grid)
+{
+	return real_floor(x / grid + REAL_C(0.5)) * grid;
+}
 /* Reading numbers: real_from_text converts a whole token, times 2^shift (the scene's
  * length scale, always 0 in floating point), and returns a REAL_TEXT_ status. */
 static inline int real_from_text(const char *text, int shift, real *out)

@@ -167,6 +167,33 @@ static void test_shared(void)
 	CHECK_INT(contains(&b, REAL_C(1.0), REAL_C(1.0)), 0);
 	CHECK_INT(contains(&c, REAL_C(1.0), REAL_C(1.0)), 0);
 	CHECK_INT(contains(&d, REAL_C(1.0), REAL_C(1.0)), 0);
+
+	/* The same through polygon_intersect from hit points a few rounding errors off the
+	 * edge and the corner, to either side (float 2^-21 = 4 ulp of 1, double and long
+	 * double 2^-50, Q16.16 2 LSB): each goes where the exact point goes, in every type
+	 * (hit points are snapped to a grid of 2^-19 of their scale or finer, real.h). */
+	{
+		static const double sides[4][2] = {{1, 1}, {1, -1}, {-1, 1}, {-1, -1}};
+		double off = TOL3(ldexp(1.0, -21), ldexp(1.0, -50), 2 * LSB);
+		int k, hits_a_edge = 0, hits_b_edge = 0, hits_a_corner = 0, hits_other_corner = 0;
+		for (k = 0; k < 4; k++) {
+			hit h;
+			ray r = test_ray(vec_make(test_real(1.0 + sides[k][0] * off),
+						  test_real(0.5 + sides[k][1] * off), REAL_C(1.0)),
+					 VEC_C(0, 0, -1));
+			hits_a_edge += polygon_intersect(&s, &a, &r, 0, REAL_MAX, &h);
+			hits_b_edge += polygon_intersect(&s, &b, &r, 0, REAL_MAX, &h);
+			r.origin.y = test_real(1.0 + sides[k][1] * off);
+			hits_a_corner += polygon_intersect(&s, &a, &r, 0, REAL_MAX, &h);
+			hits_other_corner += polygon_intersect(&s, &b, &r, 0, REAL_MAX, &h) +
+					     polygon_intersect(&s, &c, &r, 0, REAL_MAX, &h) +
+					     polygon_intersect(&s, &d, &r, 0, REAL_MAX, &h);
+		}
+		CHECK_INT(hits_a_edge, 4);
+		CHECK_INT(hits_b_edge, 0);
+		CHECK_INT(hits_a_corner, 4);
+		CHECK_INT(hits_other_corner, 0);
+	}
 }
 
 /* G09: the L (0,0)(2,0)(2,1)(1,1)(1,2)(0,2) is concave. G10: a pentagram's centre is
@@ -339,13 +366,12 @@ static void pick_on_edge(const grid *g, double uv[2])
 	} else {
 		const double(*e)[2] = g->edge[(int)(rnd() * g->edges)];
 		double t = rnd();
-#if REAL_FIXED
-		/* Q16.16: a ray's hit point is off by up to |p| 2^-17 / cos (the plane's rounded
-		 * normal, far from the origin), so a point that close to the end of an edge on
-		 * the grid's border could land outside the grid: points stay 5 % of an edge
-		 * from its ends (interior vertices are picked above). */
+		/* A point that close to the end of an edge on the grid's border could land
+		 * outside the grid: the polygon test snaps hit points to a grid of 2^-19 (float)
+		 * to 2^-14 (Q16.16) of their scale, and in Q16.16 a ray's hit point is off by up
+		 * to |p| 2^-17 / cos (the plane's rounded normal, far from the origin). Points
+		 * stay 5 % of an edge from its ends (interior vertices are picked above). */
 		t = 0.05 + 0.9 * t;
-#endif
 		uv[0] = e[0][0] + t * (e[1][0] - e[0][0]);
 		uv[1] = e[0][1] + t * (e[1][1] - e[0][1]);
 	}
@@ -552,13 +578,15 @@ static void test_patch(void)
 	e[1] = 0.25 * r3;
 	e[2] = 0.25 + 0.5 * r2 + 0.25 * r3;
 	check_patch_normal(&tri, REAL_C(0.75), REAL_C(0.25), e);
-	/* Near a vertex the blend tends to that vertex's normal. (In Q16.16 1e-6 is below an
-	 * LSB: the point is 2 and 4 LSB from the vertex there.) */
+	/* Near a vertex the blend tends to that vertex's normal. The point stays beyond the
+	 * grid the polygon test snaps hit points to at this scale (real.h: 2^-19 in float,
+	 * 8 LSB in Q16.16, where 1e-5 is below an LSB and the point is 8 and 16 LSB from the
+	 * vertex instead). */
 	{
 #if REAL_FIXED
-		real x = REAL_C(1.0) - 2, y = REAL_C(1.0) - 4;
+		real x = REAL_C(1.0) - 8, y = REAL_C(1.0) - 16;
 #else
-		real x = REAL_C(0.999999), y = REAL_C(0.999998);
+		real x = REAL_C(0.99999), y = REAL_C(0.99998);
 #endif
 		double a = 1.0 - test_double(x), b = test_double(x) - test_double(y),
 		       c = test_double(y);
