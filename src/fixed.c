@@ -383,11 +383,14 @@ int fixed_length_shift(int32_t extent, int measured_shift)
 
 int fixed_can_represent(int32_t extent, int32_t feature, const char **why)
 {
-	/* The smallest feature (a radius, a cone's length) must keep its square and a hit
-	 * point good to a few LSB: at least 1/16384 of the extent, 1/4 unit at full scale. */
+	/* The smallest feature (a radius, a cone's length) must keep its square and stay
+	 * well above the hit point's error and the secondary-ray offset: at least 1/32768 of
+	 * the extent, 1/8 unit at full scale. Measured at 256x256 against the reference:
+	 * SPD shells (ratio 28,600) hits another object in 0.03 % of its pixels, SPD tree at
+	 * its default size (49,140) in 3.1 %. */
 	*why = NULL;
-	if (feature > 0 && (int64_t)feature * 16384 < extent) {
-		*why = "the ratio of its extent to its smallest feature is over 16384";
+	if (feature > 0 && (int64_t)feature * 32768 < extent) {
+		*why = "the ratio of its extent to its smallest feature is over 32768";
 		return 0;
 	}
 	return 1;

@@ -322,6 +322,17 @@ static void test_range_refusals(void)
 	/* S13's wall beside unit spheres (smallpt's room): radius 1e5 next to radius 1. */
 	check_range("s13.nff", "v from 50 52 295.6 at 50 52 0 up 0 1 0 angle 40 hither 1\n"
 			       "resolution 16 16\ns 100001 40.8 81.6 100000\ns 27 16.5 47 1\n");
+	/* Either side of the limit, 1/32768 of the extent: unit spheres 30,000 apart are held
+	 * (SPD shells has a ratio of 28,600), 34,000 apart they are not. */
+	{
+		static scene sc;
+		CHECK(test_parse_buffer(&sc, "wide.nff",
+					"v from 0 0 -5 at 0 0 0 up 0 1 0 angle 40 hither 1\n"
+					"resolution 16 16\ns 0 0 0 1\ns 30000 0 0 1\n",
+					keep_message, NULL));
+	}
+	check_range("wider.nff", "v from 0 0 -5 at 0 0 0 up 0 1 0 angle 40 hither 1\n"
+				 "resolution 16 16\ns 0 0 0 1\ns 34000 0 0 1\n");
 	/* S18 with a pebble: the Earth beside a 10 m sphere. */
 	check_range("s18.nff", "v from 0 1000 0 at 0 980 -1000 up 0 1 0 angle 40 hither 1\n"
 			       "resolution 16 16\ns 0 -6371000 0 6371000\ns 0 1000 -100 10\n");
