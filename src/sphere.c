@@ -58,13 +58,16 @@ int sphere_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h
 	 * the quadratic keeps its a. Perpendicular offset of the centre from the ray line
 	 * (terms of size r^2, not |f|^2); b^2 - a c = a (r^2 - |v|^2), written as
 	 * D + D (a - 1) to keep fixed point's low bits. */
-	real a = vec_dot(r->dir, r->dir);
+	real a;
 	vec3 v;
-	real2 ac = real2_scale(c, a);
 	/* A clear miss by the textbook discriminant b^2 - a c (cheap: no division, no root)
-	 * is a miss: only rays that pass near the sphere take the careful path below. */
-	if (real_mul2(b, b) - ac < -real2_error_bound(b, ac))
+	 * is a miss: only rays that pass near the sphere take the careful path below. It
+	 * is tested with a = 1: directions are unit up to rounding, so a >= 1 - 2^-10, and
+	 * for c > 0 (outside; inside, b^2 - a c >= 0 is never a miss) b^2 - a c is then
+	 * below b^2 - c + c 2^-10. Rays that miss need neither a nor its product. */
+	if (real_mul2(b, b) - c < -(real2_error_bound(b, c) + real2_unit_slack(c)))
 		return 0;
+	a = vec_dot(r->dir, r->dir);
 	v = vec_madd(f, -real_div(b, a), r->dir);
 	real2 perpendicular = s->radius2 - vec_dot2(v, v);
 	real2 discriminant = perpendicular + real2_scale(perpendicular, a - REAL_C(1.0));
