@@ -31,10 +31,15 @@ int object_intersect(const scene *s, int index, const ray *r, real tmin, real tm
  * (SPD's teapot has patches whose vertex normals oppose the face). */
 static void face_forward(const ray *r, hit *h)
 {
+	h->flat = h->shading.x == h->normal.x && h->shading.y == h->normal.y &&
+		  h->shading.z == h->normal.z;
 	h->front = vec_dot(h->normal, r->dir) < REAL_C(0.0);
 	if (!h->front)
 		h->normal = vec_neg(h->normal);
-	if (vec_dot(h->shading, h->normal) < REAL_C(0.0))
+	/* A shading normal that is the geometric one turns with it: no product needed. */
+	if (h->flat)
+		h->shading = h->normal;
+	else if (vec_dot(h->shading, h->normal) < REAL_C(0.0))
 		h->shading = vec_neg(h->shading);
 }
 

@@ -25,6 +25,7 @@ typedef struct {
 	vec3 shading; /* shading normal (interpolated on patches), on the same side as normal */
 	int object;   /* index into scene.objects */
 	int front;    /* 1 when the ray arrived from the outside of the surface */
+	int flat;     /* 1 when shading is the geometric normal (all but patches): set with front */
 } hit;
 
 int sphere_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h);

@@ -116,7 +116,7 @@ static vec3 shade_lights(tracer *t, const hit *h, const material *mat, vec3 mirr
 		const light *l = &s->lights[i];
 		vec3 to_light = vec_sub(l->position, h->point);
 		real2 distance2 = vec_dot2(to_light, to_light);
-		real distance, diffuse, highlight, pass;
+		real distance, cosine, diffuse, highlight, pass;
 		real_reciprocal per_distance;
 		vec3 dir, lit;
 		ray shadow;
@@ -128,9 +128,12 @@ static vec3 shade_lights(tracer *t, const hit *h, const material *mat, vec3 mirr
 		distance = real2_sqrt_by(distance2, per_distance);
 		dir = vec_times_reciprocal(to_light, per_distance);
 		/* A light behind the surface sends no shadow ray (SPD rule). */
-		if (vec_dot(h->normal, dir) <= REAL_C(0.0))
+		cosine = vec_dot(h->normal, dir);
+		if (cosine <= REAL_C(0.0))
 			continue;
-		diffuse = real_mul(mat->kd, real_max(vec_dot(h->shading, dir), REAL_C(0.0)));
+		if (!h->flat)
+			cosine = real_max(vec_dot(h->shading, dir), REAL_C(0.0));
+		diffuse = real_mul(mat->kd, cosine);
 		highlight = REAL_C(0.0);
 		if (mat->ks > REAL_C(0.0)) {
 			real c = vec_dot(mirror_dir, dir);
@@ -139,9 +142,13 @@ static vec3 shade_lights(tracer *t, const hit *h, const material *mat, vec3 mirr
 		}
 		if (!(diffuse > REAL_C(0.0)) && !(highlight > REAL_C(0.0)))
 			continue;
-		/* The light's full contribution: diffuse in the surface colour, white highlight. */
-		lit = bounded(vec_mul(l->color, vec_madd(vec_make(highlight, highlight, highlight),
-							 diffuse, mat->color)));
+		/* The light's full contribution: diffuse in the surface colour, white highlight,
+		 * in the light's colour (a white light's products would change nothing). */
+		lit = vec_madd(vec_make(highlight, highlight, highlight), diffuse, mat->color);
+		if (l->color.x != REAL_C(1.0) || l->color.y != REAL_C(1.0) ||
+		    l->color.z != REAL_C(1.0))
+			lit = vec_mul(l->color, lit);
+		lit = bounded(lit);
 		/* At the horizon nothing in the scene is between the point and the light. */
 		if (!(h->t < HORIZON_T)) {
 			sum = vec_add(sum, lit);
@@ -229,9 +236,10 @@ static vec3 trace_ray(tracer *t, const ray *r, int level, real weight, const med
 	mat = &s->materials[s->objects[h.object].material];
 
 	/* Phong shading reflects about the shading normal; if that would send the ray into
-	 * the surface (possible on patches), reflect about the geometric normal instead. */
+	 * the surface (possible on patches), reflect about the geometric normal instead
+	 * (the same ray when the two normals are one). */
 	mirror_dir = optics_reflect(r->dir, h.shading);
-	if (vec_dot(mirror_dir, h.normal) <= REAL_C(0.0))
+	if (!h.flat && vec_dot(mirror_dir, h.normal) <= REAL_C(0.0))
 		mirror_dir = optics_reflect(r->dir, h.normal);
 
 	color = shade_lights(t, &h, mat, mirror_dir, level);
