@@ -24,22 +24,29 @@ int camera_init(camera *c, const view *v, int width, int height)
 	return 1;
 }
 
-ray camera_ray(const camera *c, real x, real y)
+/* Image-plane offsets at unit distance, as fractions of the half width; y grows
+ * downwards in the image. (Multiplying x by a rounded pixel size would carry its
+ * rounding across the row: in Q16.16 several pixels at the far edge. The reciprocal of
+ * the width keeps 31 bits in fixed point, and is the division in floating point.)
+ * 2x is x + x: the same number in every type (pixel coordinates are far below
+ * overflow), and no multiply. */
+camera_line camera_line_at(const camera *c, real y)
 {
-	/* Image-plane offsets at unit distance, as fractions of the half width; y grows
-	 * downwards in the image. (Multiplying x by a rounded pixel size would carry its
-	 * rounding across the row: in Q16.16 several pixels at the far edge. The reciprocal
-	 * of the width keeps 31 bits in fixed point, and is the division in floating point.) */
-	real width = real_from_int(c->width);
-	/* 2x as x + x: the same number in every type (pixel coordinates are far below
-	 * overflow), and no multiply. */
-	real u = real_mul(real_times_reciprocal(x + x - width, c->per_width),
-			  c->half_width);
+	camera_line line;
 	real v = real_mul(real_times_reciprocal(real_from_int(c->height) - (y + y),
 						c->per_width),
 			  c->half_width);
+	line.up_offset = vec_scale(c->up, v);
+	return line;
+}
+
+ray camera_ray(const camera *c, const camera_line *line, real x)
+{
+	real u = real_mul(real_times_reciprocal(x + x - real_from_int(c->width), c->per_width),
+			  c->half_width);
 	ray r;
 	r.origin = c->eye;
-	r.dir = vec_normalize(vec_madd(vec_madd(c->forward, u, c->right), v, c->up));
+	/* forward + u right, then the line's v up: in that order, as sums round. */
+	r.dir = vec_normalize(vec_add(vec_madd(c->forward, u, c->right), line->up_offset));
 	return r;
 }

@@ -17,8 +17,17 @@ typedef struct {
  * (from = at, or up parallel to the view direction). */
 int camera_init(camera *c, const view *v, int width, int height);
 
-/* The eye ray through image position (x, y), in pixels from the top-left corner:
- * (i + 0.5, j + 0.5) is the centre of pixel (i, j), (i, j) its top-left corner. */
-ray camera_ray(const camera *c, real x, real y);
+/* What the eye rays of one image line share: its offset along up on the image plane. */
+typedef struct {
+	vec3 up_offset;
+} camera_line;
+
+/* The line at y pixels from the top, for camera_ray. */
+camera_line camera_line_at(const camera *c, real y);
+
+/* The eye ray through image position (x, y), in pixels from the top-left corner, for
+ * the line at y: (i + 0.5, j + 0.5) is the centre of pixel (i, j), (i, j) its top-left
+ * corner. */
+ray camera_ray(const camera *c, const camera_line *line, real x);
 
 #endif

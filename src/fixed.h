@@ -86,6 +86,12 @@ FIXED_PARTS int32_t fixed_add(int32_t a, int32_t b)
 	return a + b;
 }
 
+/* |a|, saturating (a few instructions: inline everywhere). */
+static inline int32_t fixed_abs(int32_t a)
+{
+	return a < 0 ? (a == INT32_MIN ? INT32_MAX : -a) : a;
+}
+
 /* a b as (*high << 32) + *low for unsigned a and b, as fixed_umul64_narrow. */
 FIXED_PARTS void fixed_umul64_parts(uint32_t a, uint32_t b, uint32_t *low, uint32_t *high)
 {
@@ -377,7 +383,6 @@ FIXED_KERNEL int32_t fixed_dot3(int32_t ax, int32_t ay, int32_t az, int32_t bx, 
 FIXED_KERNEL int64_t fixed_dot3_wide(int32_t ax, int32_t ay, int32_t az, int32_t bx,
 				     int32_t by, int32_t bz); /* as 64 bits, exactly */
 FIXED_KERNEL int32_t fixed_div(int32_t a, int32_t b);
-FIXED_KERNEL int32_t fixed_abs(int32_t a);
 FIXED_KERNEL int32_t fixed_from_int(long i);
 FIXED_KERNEL int32_t fixed_div2(int64_t w, int32_t b);
 FIXED_KERNEL int64_t fixed_scale2(int64_t w, int32_t a);
@@ -495,10 +500,6 @@ FIXED_KERNEL int32_t fixed_div(int32_t a, int32_t b)
 	return fixed_round_div_sat((int64_t)a * 65536, b);
 }
 
-FIXED_KERNEL int32_t fixed_abs(int32_t a)
-{
-	return a < 0 ? (a == INT32_MIN ? INT32_MAX : -a) : a;
-}
 
 FIXED_KERNEL int32_t fixed_from_int(long i)
 {
@@ -517,8 +518,8 @@ FIXED_KERNEL int32_t fixed_div2(int64_t w, int32_t b)
  * (a bit-length test: no 64-bit division). */
 FIXED_KERNEL int64_t fixed_scale2(int64_t w, int32_t a)
 {
-	int64_t high = w / 65536;
-	uint64_t mh = high < 0 ? 0u - (uint64_t)high : (uint64_t)high;
+	/* |w / 65536| (truncated, as C divides) is |w| >> 16. */
+	uint64_t mh = (w < 0 ? 0u - (uint64_t)w : (uint64_t)w) >> 16;
 	uint32_t ma = a < 0 ? 0u - (uint32_t)a : (uint32_t)a;
 	uint64_t product;
 	if (ma == 0 || mh == 0)
@@ -526,10 +527,11 @@ FIXED_KERNEL int64_t fixed_scale2(int64_t w, int32_t a)
 	/* The usual factor is near one (a squared unit length): its 17 bits and the 46 of
 	 * |high| cannot pass 2^63, and then no bit lengths are needed. */
 	if ((ma >> 17 || mh >> 46) && fixed_bit_length(mh) + fixed_bit_length(ma) > 63)
-		return (high < 0) != (a < 0) ? -INT64_MAX : INT64_MAX;
-	/* |high| |a| < 2^63 here: split |high| into 32-bit halves, each times |a| exactly. */
-	product = (fixed_umul64((uint32_t)(mh >> 32), ma) << 32) + fixed_umul64((uint32_t)mh, ma);
-	return (high < 0) != (a < 0) ? -(int64_t)product : (int64_t)product;
+		return (w < 0) != (a < 0) ? -INT64_MAX : INT64_MAX;
+	/* |high| |a| < 2^63 here: split |high| into 32-bit halves, each times |a| exactly;
+	 * the high half's product is below 2^31, so 32 bits hold it. */
+	product = ((uint64_t)((uint32_t)(mh >> 32) * ma) << 32) + fixed_umul64((uint32_t)mh, ma);
+	return (w < 0) != (a < 0) ? -(int64_t)product : (int64_t)product;
 }
 
 FIXED_KERNEL fixed_reciprocal fixed_reciprocal_of(int32_t d)

@@ -44,21 +44,18 @@ static void init_thresholds(void)
 
 unsigned char image_srgb_byte(real linear)
 {
-	int lo = 0, hi = 255;
+	int code = 0, step;
 	if (!thresholds_ready)
 		init_thresholds();
 	/* NaN fails every comparison and lands on 0, as do negatives. */
 	if (!(linear > REAL_C(0.0)))
 		return 0;
-	/* Largest code whose threshold is <= linear. */
-	while (lo < hi) {
-		int mid = (lo + hi + 1) / 2;
-		if (srgb_thresholds[mid] <= linear)
-			lo = mid;
-		else
-			hi = mid - 1;
-	}
-	return (unsigned char)lo;
+	/* Largest code whose threshold is <= linear (the thresholds increase): one bit of
+	 * the code per step, from the top, with no bounds to keep. */
+	for (step = 128; step > 0; step >>= 1)
+		if (srgb_thresholds[code + step] <= linear)
+			code += step;
+	return (unsigned char)code;
 }
 
 void image_encode_row(const vec3 *colors, int count, unsigned char *bytes)

@@ -7,10 +7,21 @@
 
 int object_intersect(const scene *s, int index, const ray *r, real tmin, real tmax, hit *h)
 {
+	return object_intersect_from(s, index, r, NULL, tmin, tmax, h);
+}
+
+int object_intersect_from(const scene *s, int index, const ray *r, const origin_term *k,
+			  real tmin, real tmax, hit *h)
+{
 	const object *o = &s->objects[index];
+	origin_term own;
+	if (!k) {
+		origin_term_init(o, r->origin, &own);
+		k = &own;
+	}
 	switch (o->kind) {
 	case SHAPE_SPHERE:
-		return sphere_intersect(o, r, tmin, tmax, h);
+		return sphere_intersect_from(o, r, k, tmin, tmax, h);
 	case SHAPE_POLYGON:
 	case SHAPE_PATCH:
 		return polygon_intersect(s, o, r, tmin, tmax, h);
@@ -21,7 +32,7 @@ int object_intersect(const scene *s, int index, const ray *r, real tmin, real tm
 	case SHAPE_HEDRON:
 		return hedron_intersect(s, o, r, tmin, tmax, h);
 	case SHAPE_PLANE:
-		return plane_intersect(o, r, tmin, tmax, h);
+		return plane_intersect_from(o, r, k, tmin, tmax, h);
 	default:
 		return 0;
 	}
@@ -31,14 +42,32 @@ int object_intersect(const scene *s, int index, const ray *r, real tmin, real tm
  * (SPD's teapot has patches whose vertex normals oppose the face). */
 static void face_forward(const ray *r, hit *h)
 {
+	h->flat = h->shading.x == h->normal.x && h->shading.y == h->normal.y &&
+		  h->shading.z == h->normal.z;
 	h->front = vec_dot(h->normal, r->dir) < REAL_C(0.0);
 	if (!h->front)
 		h->normal = vec_neg(h->normal);
-	if (vec_dot(h->shading, h->normal) < REAL_C(0.0))
+	/* A shading normal that is the geometric one turns with it: no product needed. */
+	if (h->flat)
+		h->shading = h->normal;
+	else if (vec_dot(h->shading, h->normal) < REAL_C(0.0))
 		h->shading = vec_neg(h->shading);
 }
 
+void origin_terms_init(const scene *s, vec3 origin, origin_terms *k)
+{
+	int i;
+	k->origin = origin;
+	for (i = 0; i < s->object_count; i++)
+		origin_term_init(&s->objects[i], origin, &k->terms[i]);
+}
+
 int scene_intersect(const scene *s, const ray *r, real tmax, hit *h)
+{
+	return scene_intersect_from(s, r, NULL, tmax, h);
+}
+
+int scene_intersect_from(const scene *s, const ray *r, const origin_terms *k, real tmax, hit *h)
 {
 	int i, found = 0;
 #if RT_USE_BVH
@@ -49,7 +78,8 @@ int scene_intersect(const scene *s, const ray *r, real tmax, hit *h)
 	{
 		for (i = 0; i < s->object_count; i++) {
 			/* Each hit shrinks tmax, so later objects only report nearer hits. */
-			if (object_intersect(s, i, r, REAL_C(0.0), tmax, h)) {
+			if (object_intersect_from(s, i, r, k ? &k->terms[i] : NULL, REAL_C(0.0),
+						  tmax, h)) {
 				tmax = h->t;
 				h->object = i;
 				found = 1;

@@ -7,10 +7,25 @@
 
 /* Dispatches to the object's shape; same contract as the shapes (shape.h). */
 int object_intersect(const scene *s, int index, const ray *r, real tmin, real tmax, hit *h);
+/* The same, given the object's terms for the ray's origin (or NULL). */
+int object_intersect_from(const scene *s, int index, const ray *r, const origin_term *k,
+			  real tmin, real tmax, hit *h);
 
 /* Nearest hit along r in (0, tmax). On a hit, h's normals face the ray (h->front says
  * from which side it came). */
 int scene_intersect(const scene *s, const ray *r, real tmax, hit *h);
+
+/* Every object's terms that depend on the ray's origin alone (shape.h), for all rays
+ * from one point: every eye ray starts at the camera. */
+typedef struct {
+	vec3 origin;
+	origin_term terms[RT_MAX_OBJECTS];
+} origin_terms;
+
+void origin_terms_init(const scene *s, vec3 origin, origin_terms *k);
+
+/* scene_intersect, for a ray from k's origin: the same hit, with fewer products. */
+int scene_intersect_from(const scene *s, const ray *r, const origin_terms *k, real tmax, hit *h);
 
 /* Fraction of light that passes along r over (0, tmax): 0 at the first opaque blocker,
  * else the product of the kt of the transmitting objects crossed. *blocker (if not NULL)

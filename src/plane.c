@@ -9,9 +9,16 @@
 
 int plane_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h)
 {
+	origin_term k;
+	k.u.distance = o->u.plane.offset - vec_dot(o->u.plane.normal, r->origin);
+	return plane_intersect_from(o, r, &k, tmin, tmax, h);
+}
+
+int plane_intersect_from(const object *o, const ray *r, const origin_term *k, real tmin,
+			 real tmax, hit *h)
+{
 	const plane_shape *pl = &o->u.plane;
-	real denom = vec_dot(pl->normal, r->dir);
-	real distance = pl->offset - vec_dot(pl->normal, r->origin), t;
+	real denom = vec_dot(pl->normal, r->dir), distance = k->u.distance, t;
 	if (denom == REAL_C(0.0))
 		return 0;
 	/* A plane behind the origin or through it (t <= 0) is no hit when tmin >= 0: known

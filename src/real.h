@@ -130,6 +130,9 @@ typedef fixed_reciprocal real_reciprocal;
  * truncates: off by |w| / 2^16), with room to spare: errors here are absolute. */
 #define real2_error_bound(b, w) \
 	((real2)fixed_abs(b) + ((w) < 0 ? -(w) : (w)) / 65536 + (real2)131072)
+/* How far w > 0 moves when scaled by the squared length of a unit direction (within
+ * 2^-10 of 1, far more than rounding leaves it off): 2^-10 of w, a shift. */
+#define real2_unit_slack(w) ((w) / 1024)
 /* Beyond any scaled scene's coordinates (4096): an infinite plane is seen out to six
  * times the scene's extent. Hit points out there are within range (4096 + 24000), and
  * the vector arithmetic from them saturates (real_add) rather than overflows. */
@@ -239,6 +242,7 @@ typedef real real_reciprocal;
 #define real2_sqrt_by(w, r) ((void)(w), (r))
 /* How far b^2 - w can be off through rounding: relative errors, bounded generously. */
 #define real2_error_bound(b, w) ((real_mul2((b), (b)) + real_fabs(w)) * REAL_OFFSET)
+#define real2_unit_slack(w) ((w) * REAL_C(0.0009765625)) /* 2^-10 of w (see above) */
 #endif
 /* real2 is the type of squared lengths and products of two lengths (dot products of
  * positions, areas, quadratic coefficients): real_mul2(a, b) is a * b as a real2,

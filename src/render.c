@@ -13,8 +13,9 @@ static int row_ids[RT_MAX_WIDTH + 1];
 static void trace_corner_row(tracer *t, const camera *c, int y, vec3 *out)
 {
 	int x;
+	camera_line line = camera_line_at(c, real_from_int(y));
 	for (x = 0; x <= c->width; x++) {
-		ray r = camera_ray(c, real_from_int(x), real_from_int(y));
+		ray r = camera_ray(c, &line, real_from_int(x));
 		out[x] = tracer_eye(t, &r, NULL);
 	}
 }
@@ -43,9 +44,9 @@ int render_image(tracer *t, const camera *c, enum render_sampling sampling, int 
 			done = above;
 			top = RT_CORNER_SAMPLING - top;
 		} else {
+			camera_line line = camera_line_at(c, real_from_int(y) + REAL_C(0.5));
 			for (x = 0; x < c->width; x++) {
-				ray r = camera_ray(c, real_from_int(x) + REAL_C(0.5),
-						   real_from_int(y) + REAL_C(0.5));
+				ray r = camera_ray(c, &line, real_from_int(x) + REAL_C(0.5));
 				rows[0][x] = tracer_eye(t, &r, &row_ids[x]);
 			}
 			done = rows[0];

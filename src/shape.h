@@ -25,9 +25,29 @@ typedef struct {
 	vec3 shading; /* shading normal (interpolated on patches), on the same side as normal */
 	int object;   /* index into scene.objects */
 	int front;    /* 1 when the ray arrived from the outside of the surface */
+	int flat;     /* 1 when shading is the geometric normal (all but patches): set with front */
 } hit;
 
 int sphere_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h);
+
+/* The terms of a sphere's or a plane's test that depend on the ray's origin alone, which
+ * rays sharing an origin (every eye ray) can compute once. */
+typedef struct {
+	vec3 f; /* sphere: origin - centre */
+	union {
+		real2 c;       /* sphere: |f|^2 - r^2 */
+		real distance; /* plane: offset - n.origin */
+	} u;
+} origin_term;
+
+/* Fills k for an object and an origin (nothing for shapes without such terms). */
+void origin_term_init(const object *o, vec3 origin, origin_term *k);
+
+/* The sphere and plane tests from the origin's terms k: the same results as without. */
+int sphere_intersect_from(const object *o, const ray *r, const origin_term *k, real tmin,
+			  real tmax, hit *h);
+int plane_intersect_from(const object *o, const ray *r, const origin_term *k, real tmin,
+			 real tmax, hit *h);
 int polygon_intersect(const scene *s, const object *o, const ray *r, real tmin, real tmax,
 		      hit *h);
 int cone_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h);

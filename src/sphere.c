@@ -20,8 +20,9 @@ int solve_quadratic(real a, real b, real2 c, real2 discriminant, real *t0, real 
 		return 2;
 	}
 	*t0 = real2_div(c, q);
-	/* a = 0 is the linear case (a ray parallel to a cylinder's axis): one root only. */
-	*t1 = a == REAL_C(0.0) ? *t0 : real_div(q, a);
+	/* a = 0 is the linear case (a ray parallel to a cylinder's axis): one root only;
+	 * a = 1 (a unit direction, often exactly) needs no division. */
+	*t1 = a == REAL_C(0.0) ? *t0 : a == REAL_C(1.0) ? q : real_div(q, a);
 	if (*t1 < *t0) {
 		real swap = *t0;
 		*t0 = *t1;
@@ -32,11 +33,29 @@ int solve_quadratic(real a, real b, real2 c, real2 discriminant, real *t0, real 
 
 int sphere_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h)
 {
+	origin_term k;
+	k.f = vec_sub(r->origin, o->u.sphere.center);
+	k.u.c = vec_dot2(k.f, k.f) - o->u.sphere.radius2;
+	return sphere_intersect_from(o, r, &k, tmin, tmax, h);
+}
+
+void origin_term_init(const object *o, vec3 origin, origin_term *k)
+{
+	if (o->kind == SHAPE_SPHERE) {
+		k->f = vec_sub(origin, o->u.sphere.center);
+		k->u.c = vec_dot2(k->f, k->f) - o->u.sphere.radius2;
+	} else if (o->kind == SHAPE_PLANE) {
+		k->u.distance = o->u.plane.offset - vec_dot(o->u.plane.normal, origin);
+	}
+}
+
+int sphere_intersect_from(const object *o, const ray *r, const origin_term *k, real tmin,
+			  real tmax, hit *h)
+{
 	const sphere_shape *s = &o->u.sphere;
-	vec3 f = vec_sub(r->origin, s->center);
-	real b = vec_dot(f, r->dir);
-	real2 c = vec_dot2(f, f) - s->radius2;
-	real t0, t1, t;
+	vec3 f = k->f;
+	real2 c = k->u.c;
+	real b = vec_dot(f, r->dir), t0, t1, t;
 	/* Outside the sphere and moving away from its centre: both roots lie behind the
 	 * origin (their product c/a > 0, their sum -2b/a < 0). Most rays miss most spheres,
 	 * and this costs nothing. */
@@ -58,16 +77,23 @@ int sphere_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h
 	 * the quadratic keeps its a. Perpendicular offset of the centre from the ray line
 	 * (terms of size r^2, not |f|^2); b^2 - a c = a (r^2 - |v|^2), written as
 	 * D + D (a - 1) to keep fixed point's low bits. */
-	real a = vec_dot(r->dir, r->dir);
+	real a;
 	vec3 v;
-	real2 ac = real2_scale(c, a);
 	/* A clear miss by the textbook discriminant b^2 - a c (cheap: no division, no root)
-	 * is a miss: only rays that pass near the sphere take the careful path below. */
-	if (real_mul2(b, b) - ac < -real2_error_bound(b, ac))
+	 * is a miss: only rays that pass near the sphere take the careful path below. It
+	 * is tested with a = 1: directions are unit up to rounding, so a >= 1 - 2^-10, and
+	 * for c > 0 (outside; inside, b^2 - a c >= 0 is never a miss) b^2 - a c is then
+	 * below b^2 - c + c 2^-10. Rays that miss need neither a nor its product. */
+	if (c > 0 && real_mul2(b, b) - c < -(real2_error_bound(b, c) + real2_unit_slack(c)))
 		return 0;
-	v = vec_madd(f, -real_div(b, a), r->dir);
+	a = vec_dot(r->dir, r->dir);
+	/* a = 1 exactly (often, in every type) divides by nothing and scales by nothing:
+	 * the same numbers without the division and the product. */
+	v = vec_madd(f, a == REAL_C(1.0) ? -b : -real_div(b, a), r->dir);
 	real2 perpendicular = s->radius2 - vec_dot2(v, v);
-	real2 discriminant = perpendicular + real2_scale(perpendicular, a - REAL_C(1.0));
+	real2 discriminant = perpendicular;
+	if (a != REAL_C(1.0))
+		discriminant += real2_scale(perpendicular, a - REAL_C(1.0));
 	if (!solve_quadratic(a, b, c, discriminant, &t0, &t1))
 		return 0;
 #endif

@@ -13,7 +13,6 @@
  * See LICENSE for copyright and licence. */
 #include "trace.h"
 
-#include "intersect.h"
 #include "optics.h"
 
 /* Colours are bounded so that sums of them (64 lights, a mirror and a refracted ray,
@@ -39,6 +38,9 @@ void tracer_init(tracer *t, const scene *s, int depth, real cutoff)
 	t->stats.shadow_rays = t->stats.reflect_rays = t->stats.refract_rays = 0;
 	for (i = 0; i < RT_MAX_DEPTH * RT_MAX_LIGHTS; i++)
 		t->last_blocker[i / RT_MAX_LIGHTS][i % RT_MAX_LIGHTS] = -1;
+	origin_terms_init(s, s->camera.from, &t->eye);
+	for (i = 0; i < s->material_count; i++)
+		t->ambient[i] = bounded(vec_mul(s->ambient, s->materials[i].color));
 	/* The eye may sit inside glass: find the closed transmitting objects around it by
 	 * asking whether a ray from the eye leaves each of them (an exit hit). */
 	t->eye_media.count = 0;
@@ -105,18 +107,36 @@ static void media_cross(const media *m, int mat, int entering, media *next)
 static vec3 trace_ray(tracer *t, const ray *r, int level, real weight, const media *m,
 		      int *hit_object);
 
+/* The origin of the rays that leave a hit on the ray's side (shadow and mirror rays),
+ * offset once for all of them, when the first one needs it. */
+typedef struct {
+	const hit *h;
+	vec3 point;
+	int made;
+} departure;
+
+static vec3 departure_point(departure *d)
+{
+	if (!d->made) {
+		d->point = trace_offset(d->h->point, d->h->normal, d->h->t);
+		d->made = 1;
+	}
+	return d->point;
+}
+
 /* Diffuse and highlight from every light the surface faces, through shadow rays. */
-static vec3 shade_lights(tracer *t, const hit *h, const material *mat, vec3 mirror_dir,
+static vec3 shade_lights(tracer *t, departure *from, const material *mat, vec3 mirror_dir,
 			 int level)
 {
 	const scene *s = t->scene;
-	vec3 sum = bounded(vec_mul(s->ambient, mat->color));
+	const hit *h = from->h;
+	vec3 sum = t->ambient[s->objects[h->object].material];
 	int i;
 	for (i = 0; i < s->light_count; i++) {
 		const light *l = &s->lights[i];
 		vec3 to_light = vec_sub(l->position, h->point);
 		real2 distance2 = vec_dot2(to_light, to_light);
-		real distance, diffuse, highlight, pass;
+		real distance, cosine, diffuse, highlight, pass;
 		real_reciprocal per_distance;
 		vec3 dir, lit;
 		ray shadow;
@@ -128,9 +148,12 @@ static vec3 shade_lights(tracer *t, const hit *h, const material *mat, vec3 mirr
 		distance = real2_sqrt_by(distance2, per_distance);
 		dir = vec_times_reciprocal(to_light, per_distance);
 		/* A light behind the surface sends no shadow ray (SPD rule). */
-		if (vec_dot(h->normal, dir) <= REAL_C(0.0))
+		cosine = vec_dot(h->normal, dir);
+		if (cosine <= REAL_C(0.0))
 			continue;
-		diffuse = real_mul(mat->kd, real_max(vec_dot(h->shading, dir), REAL_C(0.0)));
+		if (!h->flat)
+			cosine = real_max(vec_dot(h->shading, dir), REAL_C(0.0));
+		diffuse = real_mul(mat->kd, cosine);
 		highlight = REAL_C(0.0);
 		if (mat->ks > REAL_C(0.0)) {
 			real c = vec_dot(mirror_dir, dir);
@@ -139,15 +162,19 @@ static vec3 shade_lights(tracer *t, const hit *h, const material *mat, vec3 mirr
 		}
 		if (!(diffuse > REAL_C(0.0)) && !(highlight > REAL_C(0.0)))
 			continue;
-		/* The light's full contribution: diffuse in the surface colour, white highlight. */
-		lit = bounded(vec_mul(l->color, vec_madd(vec_make(highlight, highlight, highlight),
-							 diffuse, mat->color)));
+		/* The light's full contribution: diffuse in the surface colour, white highlight,
+		 * in the light's colour (a white light's products would change nothing). */
+		lit = vec_madd(vec_make(highlight, highlight, highlight), diffuse, mat->color);
+		if (l->color.x != REAL_C(1.0) || l->color.y != REAL_C(1.0) ||
+		    l->color.z != REAL_C(1.0))
+			lit = vec_mul(l->color, lit);
+		lit = bounded(lit);
 		/* At the horizon nothing in the scene is between the point and the light. */
 		if (!(h->t < HORIZON_T)) {
 			sum = vec_add(sum, lit);
 			continue;
 		}
-		shadow.origin = trace_offset(h->point, h->normal, h->t);
+		shadow.origin = departure_point(from);
 		shadow.dir = dir;
 		t->stats.shadow_rays++;
 		{
@@ -168,11 +195,11 @@ static vec3 shade_lights(tracer *t, const hit *h, const material *mat, vec3 mirr
 }
 
 /* Mirror ray of weight `ks` leaving the surface on the ray's side. */
-static vec3 trace_mirror(tracer *t, const hit *h, vec3 dir, int level, real weight, real ks,
+static vec3 trace_mirror(tracer *t, departure *from, vec3 dir, int level, real weight, real ks,
 			 const media *m)
 {
 	ray next;
-	next.origin = trace_offset(h->point, h->normal, h->t);
+	next.origin = departure_point(from);
 	next.dir = dir;
 	t->stats.reflect_rays++;
 	return vec_scale(trace_ray(t, &next, level + 1, real_mul(weight, ks), m, NULL), ks);
@@ -180,10 +207,11 @@ static vec3 trace_mirror(tracer *t, const hit *h, vec3 dir, int level, real weig
 
 /* Refracted ray of weight kt (tinted by the surface colour, as NFF's T filters through
  * the object), or a mirror ray of the same weight on total internal reflection. */
-static vec3 trace_refraction(tracer *t, const ray *r, const hit *h, const material *mat,
+static vec3 trace_refraction(tracer *t, const ray *r, departure *from, const material *mat,
 			     int level, real weight, const media *m)
 {
 	const scene *s = t->scene;
+	const hit *h = from->h;
 	int mat_index = s->objects[h->object].material;
 	media next_media;
 	real eta;
@@ -193,7 +221,7 @@ static vec3 trace_refraction(tracer *t, const ray *r, const hit *h, const materi
 	media_cross(m, mat_index, h->front, &next_media);
 	eta = real_div(medium_ior(s, m), h->front ? mat->ior : medium_ior(s, &next_media));
 	if (!optics_refract(r->dir, h->normal, eta, &dir))
-		return vec_mul(mat->color, trace_mirror(t, h, optics_reflect(r->dir, h->normal),
+		return vec_mul(mat->color, trace_mirror(t, from, optics_reflect(r->dir, h->normal),
 							level, weight, mat->kt, m));
 	next.origin = trace_offset(h->point, vec_neg(h->normal), h->t);
 	next.dir = dir;
@@ -215,10 +243,18 @@ static vec3 trace_ray(tracer *t, const ray *r, int level, real weight, const med
 	vec3 color, mirror_dir;
 	real ks;
 	hit h;
+	departure from;
 
 	/* REAL_FAR: beyond anything in the scene, and far enough from overflow that the hit
 	 * point can be computed in every type. */
-	if (!scene_intersect(s, r, REAL_FAR, &h)) {
+	/* Rays from the camera (eye rays) take the terms that depend on their origin from
+	 * the table made once for the frame. */
+	if (!scene_intersect_from(s, r,
+				  r->origin.x == t->eye.origin.x && r->origin.y == t->eye.origin.y &&
+						  r->origin.z == t->eye.origin.z
+					  ? &t->eye
+					  : NULL,
+				  REAL_FAR, &h)) {
 		if (hit_object)
 			*hit_object = -1;
 		/* A ray that never leaves an absorbing medium is absorbed completely. */
@@ -229,19 +265,23 @@ static vec3 trace_ray(tracer *t, const ray *r, int level, real weight, const med
 	mat = &s->materials[s->objects[h.object].material];
 
 	/* Phong shading reflects about the shading normal; if that would send the ray into
-	 * the surface (possible on patches), reflect about the geometric normal instead. */
+	 * the surface (possible on patches), reflect about the geometric normal instead
+	 * (the same ray when the two normals are one). */
 	mirror_dir = optics_reflect(r->dir, h.shading);
-	if (vec_dot(mirror_dir, h.normal) <= REAL_C(0.0))
+	if (!h.flat && vec_dot(mirror_dir, h.normal) <= REAL_C(0.0))
 		mirror_dir = optics_reflect(r->dir, h.normal);
 
-	color = shade_lights(t, &h, mat, mirror_dir, level);
+	from.h = &h;
+	from.point = h.point; /* until made */
+	from.made = 0;
+	color = shade_lights(t, &from, mat, mirror_dir, level);
 	if (!(h.t < HORIZON_T))
 		return bounded(color); /* no rays from the horizon */
 	ks = real_min(mat->ks, MIRROR_MAX);
 	if (ks > REAL_C(0.0) && level < t->depth && real_mul(weight, ks) >= t->cutoff)
-		color = vec_add(color, trace_mirror(t, &h, mirror_dir, level, weight, ks, m));
+		color = vec_add(color, trace_mirror(t, &from, mirror_dir, level, weight, ks, m));
 	if (mat->kt > REAL_C(0.0) && level < t->depth && real_mul(weight, mat->kt) >= t->cutoff)
-		color = vec_add(color, trace_refraction(t, r, &h, mat, level, weight, m));
+		color = vec_add(color, trace_refraction(t, r, &from, mat, level, weight, m));
 	if (absorbing)
 		color = vec_mul(color, vec_make(optics_beer(absorb->x, h.t), optics_beer(absorb->y, h.t),
 						optics_beer(absorb->z, h.t)));

@@ -3,7 +3,7 @@
 #ifndef RT_TRACE_H
 #define RT_TRACE_H
 
-#include "shape.h"
+#include "intersect.h"
 
 typedef struct {
 	unsigned long eye_rays, eye_hits;
@@ -26,6 +26,8 @@ typedef struct {
 	/* The opaque object that last blocked each light at each ray level, tried first:
 	 * neighbouring shadow rays usually share their blocker. -1 when none. */
 	int last_blocker[RT_MAX_DEPTH][RT_MAX_LIGHTS];
+	origin_terms eye; /* the objects' terms for rays from the camera */
+	vec3 ambient[RT_MAX_MATERIALS]; /* each material's ambient light, made once */
 } tracer;
 
 void tracer_init(tracer *t, const scene *s, int depth, real cutoff);
