@@ -148,7 +148,12 @@ typedef fixed_reciprocal real_reciprocal;
  * scenes/hard/grid-edges.nff: errors up to 3,089 LSB at a scale of 2^28.2, grid 2^14). */
 static inline real real_snap_grid(real scale)
 {
-	return (real)1 << (fixed_bit_length((uint64_t)(4 + (scale >> 14))) - 1);
+	real grid = 4 + (scale >> 14);
+	/* Clearing the lowest set bit until one is left: the top power of two (fewer
+	 * instructions in flash than a bit length). */
+	while (grid & (grid - 1))
+		grid &= grid - 1;
+	return grid;
 }
 /* x rounded to a multiple of grid (a power of two), halves upwards. */
 static inline real real_snap(real x, real grid)
