@@ -56,6 +56,11 @@ static void emit(const char *file, int line, const char *kind, const char *fmt, 
 		current_sink(current_ctx, message);
 }
 
+void diag_verror(const char *file, int line, const char *fmt, va_list ap)
+{
+	emit(file, line, "", fmt, ap);
+}
+
 void diag_error(const char *file, int line, const char *fmt, ...)
 {
 	va_list ap;
