@@ -512,41 +512,47 @@ static int parse_sphere(parser *p)
 	return 1;
 }
 
-/* Newell's normal (twice the vector area) of vertices[0..count). */
 /* Newell's normal of vertices[0..count), as a unit vector; the zero vector when the
  * polygon has no area. Its components are areas (products of lengths), summed as real2
- * and brought back to size by the largest before normalising. */
+ * and brought back to size by the largest before normalising. Axis by axis in a loop,
+ * component k from the two axes after it: one copy of the arithmetic, not three. */
 static vec3 newell_normal(const vec3 *v, int count)
 {
-	real2 nx = 0, ny = 0, nz = 0, largest;
-	int i;
+	real2 n[3] = {0, 0, 0}, largest = 0;
+	real unit[3];
+	int i, k;
 	for (i = 0; i < count; i++) {
 		vec3 a = v[i], b = v[i + 1 == count ? 0 : i + 1];
-		/* Saturating: the measuring pass reads coordinates up to fixed point's limit. */
-		nx += real_mul2(real_add(a.y, -b.y), real_add(a.z, b.z));
-		ny += real_mul2(real_add(a.z, -b.z), real_add(a.x, b.x));
-		nz += real_mul2(real_add(a.x, -b.x), real_add(a.y, b.y));
+		for (k = 0; k < 3; k++) {
+			int j = k == 2 ? 0 : k + 1, m = k == 0 ? 2 : k - 1;
+			/* Saturating: the measuring pass reads coordinates up to fixed point's
+			 * limit. */
+			n[k] += real_mul2(real_add(vec_get(a, j), -vec_get(b, j)),
+					  real_add(vec_get(a, m), vec_get(b, m)));
+		}
 	}
-	largest = real_max(real_max(nx < 0 ? -nx : nx, ny < 0 ? -ny : ny), nz < 0 ? -nz : nz);
+	for (k = 0; k < 3; k++)
+		largest = real_max(largest, n[k] < 0 ? -n[k] : n[k]);
 	if (!(largest > 0))
 		return vec_make(REAL_C(0.0), REAL_C(0.0), REAL_C(0.0));
-	return vec_normalize(vec_make(real2_ratio(nx, largest), real2_ratio(ny, largest),
-				      real2_ratio(nz, largest)));
+	for (k = 0; k < 3; k++)
+		unit[k] = real2_ratio(n[k], largest);
+	return vec_normalize(vec_make(unit[0], unit[1], unit[2]));
 }
 
 /* The mean of vertices[0..count), summed as real2 so that many large coordinates cannot
  * overflow fixed point. */
 static vec3 centroid_of(const vec3 *v, int count)
 {
-	real2 sx = 0, sy = 0, sz = 0;
-	real n = real_from_int(count);
-	int i;
-	for (i = 0; i < count; i++) {
-		sx += real2_from(v[i].x);
-		sy += real2_from(v[i].y);
-		sz += real2_from(v[i].z);
-	}
-	return vec_make(real2_div(sx, n), real2_div(sy, n), real2_div(sz, n));
+	real2 sum[3] = {0, 0, 0};
+	real n = real_from_int(count), mean[3];
+	int i, k;
+	for (i = 0; i < count; i++)
+		for (k = 0; k < 3; k++)
+			sum[k] += real2_from(vec_get(v[i], k));
+	for (k = 0; k < 3; k++)
+		mean[k] = real2_div(sum[k], n);
+	return vec_make(mean[0], mean[1], mean[2]);
 }
 
 /* `p n` or `pp n` followed by n vertices (pp: each with its normal). */
@@ -704,7 +710,7 @@ static int parse_hedron(parser *p)
 /* Extension `box x0 y0 z0 x1 y1 z1`: an axis-aligned box from two opposite corners. */
 static int parse_box(parser *p)
 {
-	int line = p->lx.tok_line, first = p->s->plane_count, axis;
+	int line = p->lx.tok_line, first = p->s->plane_count, face;
 	vec3 a, b;
 	object *o;
 	if (!read_triple(&p->lx, "box corner", 1, &a) ||
@@ -714,13 +720,15 @@ static int parse_box(parser *p)
 		warn(p, line, "box with zero thickness");
 		return 1;
 	}
-	for (axis = 0; axis < 3; axis++) {
+	/* Face 2 axis + 0 is the upper side n.x <= hi, 2 axis + 1 the lower -n.x <= -lo. */
+	for (face = 0; face < 6; face++) {
+		int axis = face >> 1;
 		real lo = real_min(vec_get(a, axis), vec_get(b, axis));
 		real hi = real_max(vec_get(a, axis), vec_get(b, axis));
 		vec3 n = vec_make(axis == 0 ? REAL_C(1.0) : REAL_C(0.0),
 				  axis == 1 ? REAL_C(1.0) : REAL_C(0.0),
 				  axis == 2 ? REAL_C(1.0) : REAL_C(0.0));
-		if (!add_halfspace(p, n, hi, line) || !add_halfspace(p, vec_neg(n), -lo, line))
+		if (!add_halfspace(p, face & 1 ? vec_neg(n) : n, face & 1 ? -lo : hi, line))
 			return 0;
 	}
 	o = new_object(p, SHAPE_HEDRON, line);
@@ -804,9 +812,7 @@ static void finish_lights(parser *p)
 			s->lights[i].color = vec_make(each, each, each);
 }
 
-/* The commands, in the order of enum command: one string of names, each ended by its
- * NUL, the list by an empty name. Found by one loop rather than a chain of comparisons,
- * which costs flash on the microcontroller. */
+/* The commands, in the order of enum command (for parse_keyword). */
 static const char command_names[] =
 	"v\0b\0l\0f\0s\0p\0pp\0c\0polyhedron\0box\0plane\0ambient\0absorb\0depth\0cutoff\0";
 enum command {
@@ -815,22 +821,21 @@ enum command {
 	CMD_UNKNOWN
 };
 
-static enum command command_of(const char *name)
+int parse_keyword(const char *names, const char *word)
 {
-	const char *c = command_names;
 	int i = 0;
-	while (*c && strcmp(c, name) != 0) {
-		c += strlen(c) + 1;
+	while (*names && strcmp(names, word) != 0) {
+		names += strlen(names) + 1;
 		i++;
 	}
-	return (enum command)i;
+	return i;
 }
 
 static int parse_entity(parser *p)
 {
 	const char *cmd = p->lx.tok;
 	long depth;
-	switch (command_of(cmd)) {
+	switch ((enum command)parse_keyword(command_names, cmd)) {
 	case CMD_VIEW:
 		return parse_view(p);
 	case CMD_BACKGROUND:
