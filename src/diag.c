@@ -21,39 +21,49 @@ void diag_set_sink(diag_sink_fn sink, void *ctx)
 	current_ctx = ctx;
 }
 
-/* Appends to a message buffer, never past its end (one byte is kept for the newline). */
-static size_t append(char *buf, size_t size, size_t used, const char *fmt, ...)
+/* Appends to a message buffer, never past its end (one byte is kept for the newline). A
+ * cut message is the same whether its parts are appended one by one or all at once. */
+static size_t vappend(char *buf, size_t size, size_t used, const char *fmt, va_list ap)
 {
-	va_list ap;
 	int n;
 	if (used + 2 >= size)
 		return used;
-	va_start(ap, fmt);
 	n = vsnprintf(buf + used, size - used - 1, fmt, ap);
-	va_end(ap);
 	if (n < 0)
 		return used;
 	used += (size_t)n;
 	return used + 2 >= size ? size - 2 : used;
 }
 
+static size_t append(char *buf, size_t size, size_t used, const char *fmt, ...)
+{
+	va_list ap;
+	va_start(ap, fmt);
+	used = vappend(buf, size, used, fmt, ap);
+	va_end(ap);
+	return used;
+}
+
 static void emit(const char *file, int line, const char *kind, const char *fmt, va_list ap)
 {
 	char message[512];
-	size_t used = append(message, sizeof message, 0, "rt: ");
-	int n;
+	size_t used;
 	if (file && line > 0)
-		used = append(message, sizeof message, used, "%s:%d: ", file, line);
+		used = append(message, sizeof message, 0, "rt: %s:%d: %s", file, line, kind);
 	else if (file)
-		used = append(message, sizeof message, used, "%s: ", file);
-	used = append(message, sizeof message, used, "%s", kind);
-	n = vsnprintf(message + used, sizeof message - used - 1, fmt, ap);
-	if (n > 0)
-		used = used + (size_t)n + 2 >= sizeof message ? sizeof message - 2 : used + (size_t)n;
+		used = append(message, sizeof message, 0, "rt: %s: %s", file, kind);
+	else
+		used = append(message, sizeof message, 0, "rt: %s", kind);
+	used = vappend(message, sizeof message, used, fmt, ap);
 	message[used] = '\n';
 	message[used + 1] = '\0';
 	if (!muted)
 		current_sink(current_ctx, message);
+}
+
+void diag_verror(const char *file, int line, const char *fmt, va_list ap)
+{
+	emit(file, line, "", fmt, ap);
 }
 
 void diag_error(const char *file, int line, const char *fmt, ...)

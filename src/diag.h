@@ -25,6 +25,8 @@ int diag_mute(int on);
 
 /* `rt: FILE:LINE: message` (FILE:LINE: left out when file is NULL, LINE when line <= 0). */
 void diag_error(const char *file, int line, const char *fmt, ...) RT_PRINTF(3, 4);
+/* diag_error with its arguments as a va_list, for a caller's own printf-like reporter. */
+void diag_verror(const char *file, int line, const char *fmt, va_list ap) RT_PRINTF(3, 0);
 /* `rt: FILE:LINE: warning: message` */
 void diag_warning(const char *file, int line, const char *fmt, ...) RT_PRINTF(3, 4);
 

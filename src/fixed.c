@@ -270,23 +270,25 @@ int32_t fixed_parse(const char *s, const char **end, int shift, int *overflow)
 	const char *p = s;
 	uint64_t mantissa = 0;
 	int64_t result, denominator = 1;
-	int negative = 0, digits = 0, exponent = 0, binary = 16 + shift;
+	int negative = 0, digits = 0, exponent = 0, binary = 16 + shift, point = 0;
 	*overflow = 0;
 	if (*p == '+' || *p == '-')
 		negative = *p++ == '-';
-	/* Up to 18 significant digits; later ones only move the decimal point. */
-	for (; *p >= '0' && *p <= '9'; p++, digits++) {
-		if (mantissa < MANTISSA_LIMIT)
+	/* Up to 18 significant digits; later ones only move the decimal point (those before
+	 * it), or are dropped (those after it). One loop for both sides of the point. */
+	for (;; p++) {
+		if (*p == '.' && !point) {
+			point = 1;
+			continue;
+		}
+		if (*p < '0' || *p > '9')
+			break;
+		digits++;
+		if (mantissa < MANTISSA_LIMIT) {
 			mantissa = mantissa * 10 + (uint64_t)(*p - '0');
-		else
-			exponent++;
-	}
-	if (*p == '.') {
-		for (p++; *p >= '0' && *p <= '9'; p++, digits++) {
-			if (mantissa < MANTISSA_LIMIT) {
-				mantissa = mantissa * 10 + (uint64_t)(*p - '0');
-				exponent--;
-			}
+			exponent -= point;
+		} else {
+			exponent += !point;
 		}
 	}
 	if (!digits) {

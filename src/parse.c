@@ -58,12 +58,10 @@ static int fail(lexer *lx, int line, const char *fmt, ...) RT_PRINTF(3, 4);
 static int fail(lexer *lx, int line, const char *fmt, ...)
 {
 	if (!lx->failed) {
-		char message[384];
 		va_list ap;
 		va_start(ap, fmt);
-		vsnprintf(message, sizeof message, fmt, ap);
+		diag_verror(lx->file, line, fmt, ap);
 		va_end(ap);
-		diag_error(lx->file, line, "%s", message);
 	}
 	lx->failed = 1;
 	return 0;
@@ -134,10 +132,8 @@ static int next_token(lexer *lx)
 	lx->tok_line = lx->line;
 	while (c >= 0 && !is_space(c) && c != '#') {
 		if (c < 0x21 || c > 0x7E) {
-			char shown[16];
-			snprintf(shown, sizeof shown, "0x%02X", (unsigned)c);
-			fail(lx, lx->line, "unexpected byte %s (this is not a text scene file)",
-			     shown);
+			fail(lx, lx->line, "unexpected byte 0x%02X (this is not a text scene file)",
+			     (unsigned)c);
 			return lx->have_tok = 0;
 		}
 		if (n == RT_TOKEN_MAX) {
@@ -170,66 +166,63 @@ static int is_number(const char *tok)
 	return real_from_text(tok, 0, &unused) != REAL_TEXT_NOT_A_NUMBER;
 }
 
-/* Reads one finite number times 2^shift; `what` names it in messages ("sphere radius"). */
-static int read_scaled(lexer *lx, const char *what, int shift, real *out)
+/* Moves to the next token, which must be the value `what`; at the end of the file says
+ * what was expected. A number is named "a number (what)" in messages, a whole count
+ * by `what` alone. */
+static int next_value(lexer *lx, const char *what, int whole)
 {
+	if (next_token(lx))
+		return 1;
+	if (lx->failed)
+		return 0;
+	return fail(lx, lx->tok_line,
+		    whole ? "unexpected end of file (expected %s)"
+			  : "unexpected end of file (expected a number (%s))",
+		    what);
+}
+
+/* Reads one finite number; a length (or a position) is read times the scene's length
+ * scale, 2^length_shift, and counts towards the longest one. */
+static int read_value(lexer *lx, const char *what, int length, real *out)
+{
+	int shift = length ? lx->length_shift : 0;
 	*out = REAL_C(0.0); /* defined even on failure (static analysis cannot see through fail) */
-	if (!next_token(lx)) {
-		if (lx->failed)
-			return 0;
-		return fail(lx, lx->tok_line, "unexpected end of file (expected %s)", what);
-	}
+	if (!next_value(lx, what, 0))
+		return 0;
 	switch (real_from_text(lx->tok, shift, out)) {
 	case REAL_TEXT_OK:
+		if (length)
+			lx->longest = real_max(lx->longest, real_fabs(*out));
 		return 1;
 	case REAL_TEXT_NOT_A_NUMBER:
-		return fail(lx, lx->tok_line, "expected %s, got '%s'", what, lx->tok);
+		return fail(lx, lx->tok_line, "expected a number (%s), got '%s'", what, lx->tok);
 	case REAL_TEXT_NOT_FINITE:
 		/* Underflow to a tiny value is harmless; overflow, NaN and infinity are not. */
-		return fail(lx, lx->tok_line, "expected %s, got '%s' (not a finite number)", what,
-			    lx->tok);
+		return fail(lx, lx->tok_line,
+			    "expected a number (%s), got '%s' (not a finite number)", what, lx->tok);
 	default:
-		return fail(lx, lx->tok_line, "expected %s within %s, got '%s' (out of range)",
-			    what, REAL_RANGE_TEXT, lx->tok);
+		return fail(lx, lx->tok_line,
+			    "expected a number (%s) within %s, got '%s' (out of range)", what,
+			    REAL_RANGE_TEXT, lx->tok);
 	}
 }
 
-/* A plain number (a colour, a weight, an angle, a direction). */
-static int read_number(lexer *lx, const char *what, real *out)
+/* Three numbers: a point (length = 1: lengths) or a direction or colour (length = 0). */
+static int read_triple(lexer *lx, const char *what, int length, vec3 *out)
 {
-	return read_scaled(lx, what, 0, out);
+	return read_value(lx, what, length, &out->x) && read_value(lx, what, length, &out->y) &&
+	       read_value(lx, what, length, &out->z);
 }
 
-/* A length or a position: scaled by the scene's length scale. */
-static int read_length(lexer *lx, const char *what, real *out)
+/* Reads a number that must not be negative. Checked while lx->tok still holds it, so
+ * the message shows the token at its own line (a look-ahead or the next number would
+ * move the current token on). */
+static int read_nonnegative(lexer *lx, const char *what, real *out)
 {
-	if (!read_scaled(lx, what, lx->length_shift, out))
-		return 0;
-	lx->longest = real_max(lx->longest, real_fabs(*out));
-	return 1;
-}
-
-static int read_vec(lexer *lx, const char *what, vec3 *out)
-{
-	return read_number(lx, what, &out->x) && read_number(lx, what, &out->y) &&
-	       read_number(lx, what, &out->z);
-}
-
-static int read_point(lexer *lx, const char *what, vec3 *out)
-{
-	return read_length(lx, what, &out->x) && read_length(lx, what, &out->y) &&
-	       read_length(lx, what, &out->z);
-}
-
-/* Reads a number that must not be negative; `name` names it ("material Kd"). Checked
- * while lx->tok still holds it, so the message shows the token at its own line (a
- * look-ahead or the next number would move the current token on). */
-static int read_nonnegative(lexer *lx, const char *what, const char *name, real *out)
-{
-	if (!read_number(lx, what, out))
+	if (!read_value(lx, what, 0, out))
 		return 0;
 	if (*out < REAL_C(0.0))
-		return fail(lx, lx->tok_line, "%s must not be negative, got %s", name, lx->tok);
+		return fail(lx, lx->tok_line, "%s must not be negative, got %s", what, lx->tok);
 	return 1;
 }
 
@@ -245,7 +238,7 @@ static int read_shine(lexer *lx, real *out)
 			return 1;
 		}
 	}
-	return read_nonnegative(lx, "a number (material Shine)", "material Shine", out);
+	return read_nonnegative(lx, "material Shine", out);
 }
 
 /* Reads a whole number in [lo, hi]; `limit` names the capacity macro behind hi, if any. */
@@ -253,12 +246,9 @@ static int read_count(lexer *lx, const char *what, long lo, long hi, const char 
 		      long *out)
 {
 	char *end;
-	*out = 0; /* defined even on failure, as in read_number */
-	if (!next_token(lx)) {
-		if (lx->failed)
-			return 0;
-		return fail(lx, lx->tok_line, "unexpected end of file (expected %s)", what);
-	}
+	*out = 0; /* defined even on failure, as in read_value */
+	if (!next_value(lx, what, 1))
+		return 0;
 	errno = 0;
 	*out = strtol(lx->tok, &end, 10);
 	if (end == lx->tok || *end != '\0')
@@ -377,19 +367,19 @@ static int parse_view(parser *p)
 				    p->lx.tok);
 		switch (k) {
 		case 0:
-			if (!read_point(&p->lx, "a number (view from)", &v->from))
+			if (!read_triple(&p->lx, "view from", 1, &v->from))
 				return 0;
 			break;
 		case 1:
-			if (!read_point(&p->lx, "a number (view at)", &v->at))
+			if (!read_triple(&p->lx, "view at", 1, &v->at))
 				return 0;
 			break;
 		case 2:
-			if (!read_vec(&p->lx, "a number (view up)", &v->up))
+			if (!read_triple(&p->lx, "view up", 0, &v->up))
 				return 0;
 			break;
 		case 3:
-			if (!read_number(&p->lx, "a number (view angle)", &v->angle))
+			if (!read_value(&p->lx, "view angle", 0, &v->angle))
 				return 0;
 			if (!(v->angle > REAL_C(0.0) && v->angle < REAL_C(180.0)))
 				return fail(&p->lx, p->lx.tok_line,
@@ -397,7 +387,7 @@ static int parse_view(parser *p)
 					    p->lx.tok);
 			break;
 		case 4:
-			if (!read_length(&p->lx, "a number (view hither)", &v->hither))
+			if (!read_value(&p->lx, "view hither", 1, &v->hither))
 				return 0;
 			break;
 		default:
@@ -445,14 +435,14 @@ static int parse_light(parser *p)
 	if (s->light_count == RT_MAX_LIGHTS)
 		return capacity_error(p, line, "lights", "RT_MAX_LIGHTS", RT_MAX_LIGHTS);
 	l = &s->lights[s->light_count];
-	if (!read_point(&p->lx, "a number (light position)", &l->position))
+	if (!read_triple(&p->lx, "light position", 1, &l->position))
 		return 0;
 	/* The colour is optional: present when a number follows on the same line. */
 	p->light_has_color[s->light_count] = number_follows_on(p, line);
 	if (p->light_has_color[s->light_count] < 0)
 		return 0;
 	if (p->light_has_color[s->light_count] &&
-	    !read_vec(&p->lx, "a number (light colour)", &l->color))
+	    !read_triple(&p->lx, "light colour", 0, &l->color))
 		return 0;
 	if (!p->light_has_color[s->light_count])
 		p->unlit_lights++;
@@ -462,20 +452,19 @@ static int parse_light(parser *p)
 
 static int parse_material(parser *p)
 {
-	static const char colour[] = "a number (material colour)";
 	lexer *lx = &p->lx;
 	int line = lx->tok_line, index;
 	material m;
 	memset(&m, 0, sizeof m);
 	/* Each value is checked as it is read, so a negative one is named at its token. */
-	if (!read_nonnegative(lx, colour, "material colour", &m.color.x) ||
-	    !read_nonnegative(lx, colour, "material colour", &m.color.y) ||
-	    !read_nonnegative(lx, colour, "material colour", &m.color.z) ||
-	    !read_nonnegative(lx, "a number (material Kd)", "material Kd", &m.kd) ||
-	    !read_nonnegative(lx, "a number (material Ks)", "material Ks", &m.ks) ||
+	if (!read_nonnegative(lx, "material colour", &m.color.x) ||
+	    !read_nonnegative(lx, "material colour", &m.color.y) ||
+	    !read_nonnegative(lx, "material colour", &m.color.z) ||
+	    !read_nonnegative(lx, "material Kd", &m.kd) ||
+	    !read_nonnegative(lx, "material Ks", &m.ks) ||
 	    !read_shine(lx, &m.shine) ||
-	    !read_nonnegative(lx, "a number (material T)", "material T", &m.kt) ||
-	    !read_number(lx, "a number (material index of refraction)", &m.ior))
+	    !read_nonnegative(lx, "material T", &m.kt) ||
+	    !read_value(lx, "material index of refraction", 0, &m.ior))
 		return 0;
 	if (m.kt > REAL_C(0.0) && !(m.ior > REAL_C(0.0)))
 		return fail(&p->lx, p->lx.tok_line,
@@ -501,8 +490,8 @@ static int parse_sphere(parser *p)
 	vec3 center;
 	real radius;
 	object *o;
-	if (!read_point(&p->lx, "a number (sphere centre)", &center) ||
-	    !read_length(&p->lx, "a number (sphere radius)", &radius))
+	if (!read_triple(&p->lx, "sphere centre", 1, &center) ||
+	    !read_value(&p->lx, "sphere radius", 1, &radius))
 		return 0;
 	if (radius == REAL_C(0.0)) {
 		warn(p, line, "sphere with radius 0");
@@ -523,41 +512,47 @@ static int parse_sphere(parser *p)
 	return 1;
 }
 
-/* Newell's normal (twice the vector area) of vertices[0..count). */
 /* Newell's normal of vertices[0..count), as a unit vector; the zero vector when the
  * polygon has no area. Its components are areas (products of lengths), summed as real2
- * and brought back to size by the largest before normalising. */
+ * and brought back to size by the largest before normalising. Axis by axis in a loop,
+ * component k from the two axes after it: one copy of the arithmetic, not three. */
 static vec3 newell_normal(const vec3 *v, int count)
 {
-	real2 nx = 0, ny = 0, nz = 0, largest;
-	int i;
+	real2 n[3] = {0, 0, 0}, largest = 0;
+	real unit[3];
+	int i, k;
 	for (i = 0; i < count; i++) {
 		vec3 a = v[i], b = v[i + 1 == count ? 0 : i + 1];
-		/* Saturating: the measuring pass reads coordinates up to fixed point's limit. */
-		nx += real_mul2(real_add(a.y, -b.y), real_add(a.z, b.z));
-		ny += real_mul2(real_add(a.z, -b.z), real_add(a.x, b.x));
-		nz += real_mul2(real_add(a.x, -b.x), real_add(a.y, b.y));
+		for (k = 0; k < 3; k++) {
+			int j = k == 2 ? 0 : k + 1, m = k == 0 ? 2 : k - 1;
+			/* Saturating: the measuring pass reads coordinates up to fixed point's
+			 * limit. */
+			n[k] += real_mul2(real_add(vec_get(a, j), -vec_get(b, j)),
+					  real_add(vec_get(a, m), vec_get(b, m)));
+		}
 	}
-	largest = real_max(real_max(nx < 0 ? -nx : nx, ny < 0 ? -ny : ny), nz < 0 ? -nz : nz);
+	for (k = 0; k < 3; k++)
+		largest = real_max(largest, n[k] < 0 ? -n[k] : n[k]);
 	if (!(largest > 0))
 		return vec_make(REAL_C(0.0), REAL_C(0.0), REAL_C(0.0));
-	return vec_normalize(vec_make(real2_ratio(nx, largest), real2_ratio(ny, largest),
-				      real2_ratio(nz, largest)));
+	for (k = 0; k < 3; k++)
+		unit[k] = real2_ratio(n[k], largest);
+	return vec_normalize(vec_make(unit[0], unit[1], unit[2]));
 }
 
 /* The mean of vertices[0..count), summed as real2 so that many large coordinates cannot
  * overflow fixed point. */
 static vec3 centroid_of(const vec3 *v, int count)
 {
-	real2 sx = 0, sy = 0, sz = 0;
-	real n = real_from_int(count);
-	int i;
-	for (i = 0; i < count; i++) {
-		sx += real2_from(v[i].x);
-		sy += real2_from(v[i].y);
-		sz += real2_from(v[i].z);
-	}
-	return vec_make(real2_div(sx, n), real2_div(sy, n), real2_div(sz, n));
+	real2 sum[3] = {0, 0, 0};
+	real n = real_from_int(count), mean[3];
+	int i, k;
+	for (i = 0; i < count; i++)
+		for (k = 0; k < 3; k++)
+			sum[k] += real2_from(vec_get(v[i], k));
+	for (k = 0; k < 3; k++)
+		mean[k] = real2_div(sum[k], n);
+	return vec_make(mean[0], mean[1], mean[2]);
 }
 
 /* `p n` or `pp n` followed by n vertices (pp: each with its normal). */
@@ -577,10 +572,10 @@ static int parse_polygon(parser *p, int patch)
 		return capacity_error(p, line, "polygon vertices in the scene", "RT_MAX_VERTICES",
 				      RT_MAX_VERTICES);
 	for (i = 0; i < count; i++) {
-		if (!read_point(&p->lx, patch ? "a number (patch vertex)" : "a number (polygon vertex)",
+		if (!read_triple(&p->lx, patch ? "patch vertex" : "polygon vertex", 1,
 			      &s->vertices[first + i]))
 			return 0;
-		if (patch && !read_vec(&p->lx, "a number (patch vertex normal)", &s->normals[first + i]))
+		if (patch && !read_triple(&p->lx, "patch vertex normal", 0, &s->normals[first + i]))
 			return 0;
 	}
 	normal = newell_normal(s->vertices + first, (int)count);
@@ -623,10 +618,10 @@ static int parse_cone(parser *p)
 	real base_radius, apex_radius, length;
 	unsigned char inside_only = 0;
 	object *o;
-	if (!read_point(&p->lx, "a number (cone base centre)", &base) ||
-	    !read_length(&p->lx, "a number (cone base radius)", &base_radius) ||
-	    !read_point(&p->lx, "a number (cone apex centre)", &apex) ||
-	    !read_length(&p->lx, "a number (cone apex radius)", &apex_radius))
+	if (!read_triple(&p->lx, "cone base centre", 1, &base) ||
+	    !read_value(&p->lx, "cone base radius", 1, &base_radius) ||
+	    !read_triple(&p->lx, "cone apex centre", 1, &apex) ||
+	    !read_value(&p->lx, "cone apex radius", 1, &apex_radius))
 		return 0;
 	/* NFF: both radii negative shows only the inside. */
 	if (base_radius < REAL_C(0.0) && apex_radius <= REAL_C(0.0)) {
@@ -698,8 +693,8 @@ static int parse_hedron(parser *p)
 	for (i = 0; i < count; i++) {
 		vec3 n;
 		real d;
-		if (!read_vec(&p->lx, "a number (polyhedron plane normal)", &n) ||
-		    !read_length(&p->lx, "a number (polyhedron plane offset)", &d) ||
+		if (!read_triple(&p->lx, "polyhedron plane normal", 0, &n) ||
+		    !read_value(&p->lx, "polyhedron plane offset", 1, &d) ||
 		    !add_halfspace(p, n, d, line))
 			return 0;
 	}
@@ -715,23 +710,25 @@ static int parse_hedron(parser *p)
 /* Extension `box x0 y0 z0 x1 y1 z1`: an axis-aligned box from two opposite corners. */
 static int parse_box(parser *p)
 {
-	int line = p->lx.tok_line, first = p->s->plane_count, axis;
+	int line = p->lx.tok_line, first = p->s->plane_count, face;
 	vec3 a, b;
 	object *o;
-	if (!read_point(&p->lx, "a number (box corner)", &a) ||
-	    !read_point(&p->lx, "a number (box corner)", &b))
+	if (!read_triple(&p->lx, "box corner", 1, &a) ||
+	    !read_triple(&p->lx, "box corner", 1, &b))
 		return 0;
 	if (a.x == b.x || a.y == b.y || a.z == b.z) {
 		warn(p, line, "box with zero thickness");
 		return 1;
 	}
-	for (axis = 0; axis < 3; axis++) {
+	/* Face 2 axis + 0 is the upper side n.x <= hi, 2 axis + 1 the lower -n.x <= -lo. */
+	for (face = 0; face < 6; face++) {
+		int axis = face >> 1;
 		real lo = real_min(vec_get(a, axis), vec_get(b, axis));
 		real hi = real_max(vec_get(a, axis), vec_get(b, axis));
 		vec3 n = vec_make(axis == 0 ? REAL_C(1.0) : REAL_C(0.0),
 				  axis == 1 ? REAL_C(1.0) : REAL_C(0.0),
 				  axis == 2 ? REAL_C(1.0) : REAL_C(0.0));
-		if (!add_halfspace(p, n, hi, line) || !add_halfspace(p, vec_neg(n), -lo, line))
+		if (!add_halfspace(p, face & 1 ? vec_neg(n) : n, face & 1 ? -lo : hi, line))
 			return 0;
 	}
 	o = new_object(p, SHAPE_HEDRON, line);
@@ -749,8 +746,8 @@ static int parse_plane(parser *p)
 	int line = p->lx.tok_line;
 	vec3 point, normal;
 	object *o;
-	if (!read_point(&p->lx, "a number (plane point)", &point) ||
-	    !read_vec(&p->lx, "a number (plane normal)", &normal))
+	if (!read_triple(&p->lx, "plane point", 1, &point) ||
+	    !read_triple(&p->lx, "plane normal", 0, &normal))
 		return 0;
 	if (!(vec_dot2(normal, normal) > 0))
 		return fail(&p->lx, line, "plane: the normal is zero");
@@ -767,41 +764,32 @@ static int parse_plane(parser *p)
  * current token on (to the next line, or to end of file). */
 static int read_absorption(parser *p, real *out)
 {
-	if (!read_nonnegative(&p->lx, "a number (absorption coefficient)",
-			      "absorption coefficient", out))
+	if (!read_nonnegative(&p->lx, "absorption coefficient", out))
 		return 0;
 	/* Per unit length: a scene scaled up by 2^shift absorbs 2^shift times less per unit. */
 	*out = real_ldexp(*out, -p->lx.length_shift);
 	return 1;
 }
 
-static int parse_settings(parser *p, const char *name)
+/* `absorb a` (grey) or `absorb ar ag ab` (per channel, on one line). */
+static int parse_absorb(parser *p)
+{
+	int line = p->lx.tok_line, per_channel;
+	real a;
+	if (!read_absorption(p, &a))
+		return 0;
+	p->absorb = vec_make(a, a, a);
+	per_channel = number_follows_on(p, line);
+	if (per_channel < 0)
+		return 0;
+	return !per_channel ||
+	       (read_absorption(p, &p->absorb.y) && read_absorption(p, &p->absorb.z));
+}
+
+static int parse_cutoff(parser *p)
 {
 	scene *s = p->s;
-	if (strcmp(name, "ambient") == 0)
-		return read_vec(&p->lx, "a number (ambient colour)", &s->ambient);
-	if (strcmp(name, "absorb") == 0) {
-		/* `absorb a` (grey) or `absorb ar ag ab` (per channel, on one line). */
-		int line = p->lx.tok_line, per_channel;
-		real a;
-		if (!read_absorption(p, &a))
-			return 0;
-		p->absorb = vec_make(a, a, a);
-		per_channel = number_follows_on(p, line);
-		if (per_channel < 0)
-			return 0;
-		return !per_channel ||
-		       (read_absorption(p, &p->absorb.y) && read_absorption(p, &p->absorb.z));
-	}
-	if (strcmp(name, "depth") == 0) {
-		long depth;
-		if (!read_count(&p->lx, "depth", 1, RT_MAX_DEPTH, "RT_MAX_DEPTH", &depth))
-			return 0;
-		s->depth = (int)depth;
-		return 1;
-	}
-	/* cutoff */
-	if (!read_number(&p->lx, "a number (cutoff weight)", &s->cutoff))
+	if (!read_value(&p->lx, "cutoff weight", 0, &s->cutoff))
 		return 0;
 	if (!(s->cutoff >= REAL_C(0.0) && s->cutoff < REAL_C(1.0)))
 		return fail(&p->lx, p->lx.tok_line, "cutoff weight must be in [0, 1), got %s",
@@ -824,42 +812,73 @@ static void finish_lights(parser *p)
 			s->lights[i].color = vec_make(each, each, each);
 }
 
+/* The commands, in the order of enum command (for parse_keyword). */
+static const char command_names[] =
+	"v\0b\0l\0f\0s\0p\0pp\0c\0polyhedron\0box\0plane\0ambient\0absorb\0depth\0cutoff\0";
+enum command {
+	CMD_VIEW, CMD_BACKGROUND, CMD_LIGHT, CMD_MATERIAL, CMD_SPHERE, CMD_POLYGON, CMD_PATCH,
+	CMD_CONE, CMD_HEDRON, CMD_BOX, CMD_PLANE, CMD_AMBIENT, CMD_ABSORB, CMD_DEPTH, CMD_CUTOFF,
+	CMD_UNKNOWN
+};
+
+int parse_keyword(const char *names, const char *word)
+{
+	int i = 0;
+	while (*names && strcmp(names, word) != 0) {
+		names += strlen(names) + 1;
+		i++;
+	}
+	return i;
+}
+
 static int parse_entity(parser *p)
 {
 	const char *cmd = p->lx.tok;
-	if (strcmp(cmd, "v") == 0)
+	long depth;
+	switch ((enum command)parse_keyword(command_names, cmd)) {
+	case CMD_VIEW:
 		return parse_view(p);
-	if (strcmp(cmd, "b") == 0) {
-		if (!read_vec(&p->lx, "a number (background colour)", &p->s->background))
+	case CMD_BACKGROUND:
+		if (!read_triple(&p->lx, "background colour", 0, &p->s->background))
 			return 0;
 		p->s->background = image_srgb_to_linear(p->s->background);
 		return 1;
-	}
-	if (strcmp(cmd, "l") == 0)
+	case CMD_LIGHT:
 		return parse_light(p);
-	if (strcmp(cmd, "f") == 0)
+	case CMD_MATERIAL:
 		return parse_material(p);
-	if (strcmp(cmd, "s") == 0)
+	case CMD_SPHERE:
 		return parse_sphere(p);
-	if (strcmp(cmd, "p") == 0)
+	case CMD_POLYGON:
 		return parse_polygon(p, 0);
-	if (strcmp(cmd, "pp") == 0)
+	case CMD_PATCH:
 		return parse_polygon(p, 1);
-	if (strcmp(cmd, "c") == 0)
+	case CMD_CONE:
 #if RT_SHAPE_CONE
 		return parse_cone(p);
 #else
 		return fail(&p->lx, p->lx.tok_line, "cones are left out of this build (RT_SHAPE_CONE)");
 #endif
-	if (strcmp(cmd, "polyhedron") == 0)
+	case CMD_HEDRON:
 		return parse_hedron(p);
-	if (strcmp(cmd, "box") == 0)
+	case CMD_BOX:
 		return parse_box(p);
-	if (strcmp(cmd, "plane") == 0)
+	case CMD_PLANE:
 		return parse_plane(p);
-	if (strcmp(cmd, "ambient") == 0 || strcmp(cmd, "absorb") == 0 ||
-	    strcmp(cmd, "depth") == 0 || strcmp(cmd, "cutoff") == 0)
-		return parse_settings(p, cmd);
+	case CMD_AMBIENT:
+		return read_triple(&p->lx, "ambient colour", 0, &p->s->ambient);
+	case CMD_ABSORB:
+		return parse_absorb(p);
+	case CMD_DEPTH:
+		if (!read_count(&p->lx, "depth", 1, RT_MAX_DEPTH, "RT_MAX_DEPTH", &depth))
+			return 0;
+		p->s->depth = (int)depth;
+		return 1;
+	case CMD_CUTOFF:
+		return parse_cutoff(p);
+	default:
+		break;
+	}
 	/* In a token stream an extra number is read as a command: say so. */
 	if (is_number(cmd))
 		return fail(&p->lx, p->lx.tok_line,

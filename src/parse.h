@@ -36,4 +36,10 @@ int parse_scene_file(scene *s, const char *path);
 /* The same for a scene held in memory. */
 int parse_scene_buffer(scene *s, const char *name, const void *data, size_t size);
 
+/* The position of `word` in `names`, a string of names each ended by its NUL and the
+ * list by an empty name; the number of names if it is not there. Scene commands and the
+ * microcontroller's options are found this way (one loop: less flash than a chain of
+ * comparisons). */
+int parse_keyword(const char *names, const char *word);
+
 #endif

@@ -101,8 +101,9 @@ long strtol(const char *restrict text, char **restrict end, int base)
 	return (long)value;
 }
 
-/* ---- formatted output: %d %u %x %X %s %c %% with flags '-' '0', width, .precision
- * (for strings) and the l length; enough for every message and header rt writes. */
+/* ---- formatted output: just what rt's messages and headers use, %s (with a
+ * .precision), %d, %u and %X, with the l length and a width, padded with zeros under the
+ * 0 flag and with spaces otherwise. Anything else prints as itself. */
 
 typedef struct {
 	char *buf;
@@ -116,18 +117,12 @@ static void put(out_buf *o, char c)
 	o->used++;
 }
 
-static void put_padded(out_buf *o, const char *text, size_t n, int width, int left, char pad)
-{
-	int fill = width > (int)n ? width - (int)n : 0;
-	if (!left)
-		while (fill-- > 0)
-			put(o, pad);
-	while (n--)
-		put(o, *text++);
-	if (left)
-		while (fill-- > 0)
-			put(o, ' ');
-}
+/* Place values of the digits: decimal, then hexadecimal's (after the first 10). */
+static const unsigned long places[] = {1000000000ul, 100000000ul, 10000000ul, 1000000ul,
+				       100000ul,     10000ul,     1000ul,     100ul,
+				       10ul,         1ul,         0x10000000ul, 0x1000000ul,
+				       0x100000ul,   0x10000ul,   0x1000ul,   0x100ul,
+				       0x10ul,       1ul};
 
 int vsnprintf(char *restrict buf, size_t size, const char *restrict fmt, va_list ap)
 {
@@ -137,20 +132,15 @@ int vsnprintf(char *restrict buf, size_t size, const char *restrict fmt, va_list
 	o.used = 0;
 	for (; *fmt; fmt++) {
 		char digits[12], pad = ' ';
-		int left = 0, width = 0, precision = -1, is_long = 0, n = 0;
+		int width = 0, precision = -1, is_long = 0, n = 0, i, last;
 		unsigned long u;
-		unsigned base = 10;
-		const char *s;
+		const char *s = digits;
 		if (*fmt != '%') {
 			put(&o, *fmt);
 			continue;
 		}
-		for (fmt++; *fmt == '-' || *fmt == '0'; fmt++) {
-			if (*fmt == '-')
-				left = 1;
-			else
-				pad = '0';
-		}
+		if (*++fmt == '0')
+			pad = *fmt++;
 		for (; *fmt >= '0' && *fmt <= '9'; fmt++)
 			width = width * 10 + (*fmt - '0');
 		if (*fmt == '.')
@@ -160,69 +150,45 @@ int vsnprintf(char *restrict buf, size_t size, const char *restrict fmt, va_list
 			is_long = 1;
 			fmt++;
 		}
-		switch (*fmt) {
-		case 's':
+		if (*fmt == 's') {
 			s = va_arg(ap, const char *);
-			for (n = 0; s[n] && (precision < 0 || n < precision); n++)
-				;
-			put_padded(&o, s, (size_t)n, width, left, ' ');
-			continue;
-		case 'c':
-			digits[0] = (char)va_arg(ap, int);
-			put_padded(&o, digits, 1, width, left, ' ');
-			continue;
-		case 'd': {
-			long v = is_long ? va_arg(ap, long) : va_arg(ap, int);
-			if (v < 0) {
-				put(&o, '-');
-				width--;
+			while (s[n] && (precision < 0 || n < precision))
+				n++;
+		} else if (*fmt == 'd' || *fmt == 'u' || *fmt == 'X') {
+			if (*fmt == 'd') {
+				long v = is_long ? va_arg(ap, long) : va_arg(ap, int);
+				if (v < 0) {
+					put(&o, '-');
+					width--;
+				}
+				u = v < 0 ? 0u - (unsigned long)v : (unsigned long)v;
+			} else {
+				u = is_long ? va_arg(ap, unsigned long) : va_arg(ap, unsigned);
 			}
-			u = v < 0 ? 0u - (unsigned long)v : (unsigned long)v;
-			break;
-		}
-		case 'x':
-		case 'X':
-			base = 16;
-			/* fall through */
-		case 'u':
-			u = is_long ? va_arg(ap, unsigned long) : va_arg(ap, unsigned);
-			break;
-		default: /* %% and anything unknown print as themselves */
+			/* Each digit by counting down its place value: the M0 has no divide,
+			 * and the library's would cost flash. Leading zeros are left out. */
+			i = *fmt == 'X' ? 10 : 0;
+			last = *fmt == 'X' ? 17 : 9;
+			for (; i <= last; i++) {
+				int d = 0;
+				while (u >= places[i]) {
+					u -= places[i];
+					d++;
+				}
+				if (d || n || i == last)
+					digits[n++] = "0123456789ABCDEF"[d];
+			}
+		} else {
+			/* %% and anything unknown print as themselves */
 			put(&o, *fmt ? *fmt : '%');
 			if (!*fmt)
 				fmt--;
 			continue;
 		}
-		/* Digits backwards into the end of the buffer; no division (the M0 has none,
-		 * and the library's would cost flash): hex by shifts, decimal by counting
-		 * down powers of ten. */
-		n = (int)sizeof digits;
-		if (base == 16) {
-			do {
-				unsigned d = (unsigned)(u & 15u);
-				digits[--n] = (char)(d < 10 ? '0' + d : (*fmt == 'x' ? 'a' : 'A') + d - 10);
-				u >>= 4;
-			} while (u);
-		} else {
-			static const unsigned long powers[] = {1000000000ul, 100000000ul, 10000000ul,
-							       1000000ul,    100000ul,    10000ul,
-							       1000ul,       100ul,       10ul, 1ul};
-			int i, started = 0;
-			for (i = 0; i < 10; i++) {
-				char d = '0';
-				while (u >= powers[i]) {
-					u -= powers[i];
-					d++;
-				}
-				if (d != '0' || started || i == 9) {
-					digits[sizeof digits - 10 + (size_t)i] = d;
-					if (!started)
-						n = (int)sizeof digits - 10 + i;
-					started = 1;
-				}
-			}
-		}
-		put_padded(&o, digits + n, sizeof digits - (size_t)n, width, left, pad);
+		for (; width > n; width--)
+			put(&o, pad);
+		for (i = 0; i < n; i++)
+			put(&o, s[i]);
 	}
 	if (size > 0)
 		buf[o.used < size ? o.used : size - 1] = '\0';

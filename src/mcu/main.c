@@ -63,6 +63,10 @@ static int read_int(const char *text, char stop, int max, int *out, const char *
 	return 1;
 }
 
+/* The options, in the order of enum option (for parse_keyword). */
+static const char option_names[] = "--ascii\0--ids\0--stack\0-s\0-d\0--cols\0";
+enum option { OPT_ASCII, OPT_IDS, OPT_STACK, OPT_SIZE, OPT_DEPTH, OPT_COLUMNS, OPT_NONE };
+
 /* Returns -1 to go on, else the exit status. */
 static int parse_options(int argc, char **argv, options *o)
 {
@@ -71,20 +75,21 @@ static int parse_options(int argc, char **argv, options *o)
 	o->columns = PREVIEW_COLUMNS;
 	for (i = 1; i < argc; i++) {
 		const char *a = argv[i], *value, *rest;
-		if (strcmp(a, "--ascii") == 0) {
+		enum option which = (enum option)parse_keyword(option_names, a);
+		if (which == OPT_ASCII) {
 			o->format = FORMAT_ASCII;
-		} else if (strcmp(a, "--ids") == 0) {
+		} else if (which == OPT_IDS) {
 			o->format = FORMAT_IDS;
-		} else if (strcmp(a, "--stack") == 0) {
+		} else if (which == OPT_STACK) {
 			o->report_stack = 1;
-		} else if (strcmp(a, "-s") == 0 || strcmp(a, "-d") == 0 || strcmp(a, "--cols") == 0) {
+		} else if (which != OPT_NONE) {
 			if (i + 1 >= argc)
 				return usage_error("option needs a value:", a);
 			value = argv[++i];
-			if (strcmp(a, "-s") == 0 ? !read_int(value, 'x', RT_MAX_WIDTH, &o->width, &rest) ||
-							   !read_int(rest, '\0', RT_MAX_HEIGHT, &o->height, NULL)
-			    : strcmp(a, "-d") == 0 ? !read_int(value, '\0', RT_MAX_DEPTH, &o->depth, NULL)
-						   : !read_int(value, '\0', RT_MAX_WIDTH, &o->columns, NULL))
+			if (which == OPT_SIZE ? !read_int(value, 'x', RT_MAX_WIDTH, &o->width, &rest) ||
+							!read_int(rest, '\0', RT_MAX_HEIGHT, &o->height, NULL)
+			    : which == OPT_DEPTH ? !read_int(value, '\0', RT_MAX_DEPTH, &o->depth, NULL)
+						 : !read_int(value, '\0', RT_MAX_WIDTH, &o->columns, NULL))
 				return usage_error("bad value for option", a);
 		} else if (a[0] == '-' || o->scene_path) {
 			return usage_error("unexpected argument", a);
