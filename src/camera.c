@@ -6,16 +6,16 @@
 int camera_init(camera *c, const view *v, int width, int height)
 {
 	vec3 forward = vec_sub(v->at, v->from);
-	vec3 right;
+	dir3 right;
 	if (!(vec_dot2(forward, forward) > 0))
 		return 0;
-	c->forward = vec_normalize(forward);
+	c->forward = dir_normalize(forward);
 	/* Orthonormalise: right = forward x up, then the true up = right x forward. */
-	right = vec_cross(c->forward, vec_normalize(v->up));
-	if (!(vec_length(right) > REAL_C(1e-9)))
+	right = dir_cross(c->forward, dir_normalize(v->up));
+	if (!(unit_sqrt(dir_dot(right, right)) > UNIT_C(1e-9)))
 		return 0;
-	c->right = vec_normalize(right);
-	c->up = vec_cross(c->right, c->forward);
+	c->right = dir_renormalize(right);
+	c->up = dir_cross(c->right, c->forward);
 	c->eye = v->from;
 	c->half_width = real_tan_degrees(real_mul(v->angle, REAL_C(0.5)));
 	c->width = width;
@@ -40,6 +40,6 @@ ray camera_ray(const camera *c, real x, real y)
 			  c->half_width);
 	ray r;
 	r.origin = c->eye;
-	r.dir = vec_normalize(vec_madd(vec_madd(c->forward, u, c->right), v, c->up));
+	r.dir = dir_normalize(dir_madd(dir_madd(dir_to_vec(c->forward), u, c->right), v, c->up));
 	return r;
 }

@@ -31,11 +31,11 @@ int object_intersect(const scene *s, int index, const ray *r, real tmin, real tm
  * (SPD's teapot has patches whose vertex normals oppose the face). */
 static void face_forward(const ray *r, hit *h)
 {
-	h->front = vec_dot(h->normal, r->dir) < REAL_C(0.0);
+	h->front = dir_dot(h->normal, r->dir) < UNIT_C(0.0);
 	if (!h->front)
-		h->normal = vec_neg(h->normal);
-	if (vec_dot(h->shading, h->normal) < REAL_C(0.0))
-		h->shading = vec_neg(h->shading);
+		h->normal = dir_neg(h->normal);
+	if (dir_dot(h->shading, h->normal) < UNIT_C(0.0))
+		h->shading = dir_neg(h->shading);
 }
 
 int scene_intersect(const scene *s, const ray *r, real tmax, hit *h)

@@ -10,22 +10,22 @@
 int plane_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h)
 {
 	const plane_shape *pl = &o->u.plane;
-	real denom = vec_dot(pl->normal, r->dir);
-	real distance = pl->offset - vec_dot(pl->normal, r->origin), t;
-	if (denom == REAL_C(0.0))
+	unit denom = dir_dot(pl->normal, r->dir);
+	real distance = pl->offset - dir_dot_vec(pl->normal, r->origin), t;
+	if (denom == UNIT_C(0.0))
 		return 0;
 	/* A plane behind the origin or through it (t <= 0) is no hit when tmin >= 0: known
 	 * from the signs, without dividing (costly on small cores). */
-	if (tmin >= REAL_C(0.0) && (distance > REAL_C(0.0)) != (denom > REAL_C(0.0)))
+	if (tmin >= REAL_C(0.0) && (distance > REAL_C(0.0)) != (denom > UNIT_C(0.0)))
 		return 0;
-	t = real_div(distance, denom);
+	t = real_div_unit(distance, denom);
 	if (t > HORIZON_T)
 		t = HORIZON_T;
 	if (!(t > tmin && t < tmax))
 		return 0;
 	if (h) {
 		h->t = t;
-		h->point = vec_madd(r->origin, t, r->dir);
+		h->point = dir_madd(r->origin, t, r->dir);
 		h->normal = pl->normal;
 		h->shading = pl->normal;
 	}

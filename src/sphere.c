@@ -34,7 +34,7 @@ int sphere_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h
 {
 	const sphere_shape *s = &o->u.sphere;
 	vec3 f = vec_sub(r->origin, s->center);
-	real b = vec_dot(f, r->dir);
+	real b = dir_dot_vec(r->dir, f);
 	real2 c = vec_dot2(f, f) - s->radius2;
 	real t0, t1, t;
 	/* Outside the sphere and moving away from its centre: both roots lie behind the
@@ -58,14 +58,14 @@ int sphere_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h
 	 * the quadratic keeps its a. Perpendicular offset of the centre from the ray line
 	 * (terms of size r^2, not |f|^2); b^2 - a c = a (r^2 - |v|^2), written as
 	 * D + D (a - 1) to keep fixed point's low bits. */
-	real a = vec_dot(r->dir, r->dir);
+	real a = unit_to_real(dir_dot(r->dir, r->dir));
 	vec3 v;
 	real2 ac = real2_scale(c, a);
 	/* A clear miss by the textbook discriminant b^2 - a c (cheap: no division, no root)
 	 * is a miss: only rays that pass near the sphere take the careful path below. */
 	if (real_mul2(b, b) - ac < -real2_error_bound(b, ac))
 		return 0;
-	v = vec_madd(f, -real_div(b, a), r->dir);
+	v = dir_madd(f, -real_div(b, a), r->dir);
 	real2 perpendicular = s->radius2 - vec_dot2(v, v);
 	real2 discriminant = perpendicular + real2_scale(perpendicular, a - REAL_C(1.0));
 	if (!solve_quadratic(a, b, c, discriminant, &t0, &t1))
@@ -80,11 +80,11 @@ int sphere_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h
 		return 0;
 	if (h) {
 		h->t = t;
-		h->point = vec_madd(r->origin, t, r->dir);
+		h->point = dir_madd(r->origin, t, r->dir);
 		/* Normalised rather than divided by r: a hit point a little off the surface
 		 * would otherwise give a normal that is not unit length, and the reflected ray
 		 * with it (the sphere test assumes unit directions). */
-		h->normal = vec_normalize(vec_sub(h->point, s->center));
+		h->normal = dir_normalize(vec_sub(h->point, s->center));
 		h->shading = h->normal;
 	}
 	return 1;
