@@ -40,6 +40,7 @@ static void empty_box(vec3 *lo, vec3 *hi)
 static int hedron_bounds(const scene *s, const object *o, vec3 *lo, vec3 *hi)
 {
 	halfspace planes[RT_MAX_HEDRON_PLANES + 6];
+	vec3 normal[RT_MAX_HEDRON_PLANES + 6]; /* as reals: Cramer's rule multiplies three */
 	int count = o->u.hedron.count, i, j, k, m, corners = 0;
 	/* Beyond every coordinate, and a third of REAL_FAR so that three such terms in
 	 * Cramer's rule below still fit fixed point. */
@@ -47,32 +48,32 @@ static int hedron_bounds(const scene *s, const object *o, vec3 *lo, vec3 *hi)
 	for (i = 0; i < count; i++)
 		planes[i] = s->planes[o->u.hedron.first + i];
 	for (i = 0; i < 6; i++) {
-		real sign = i & 1 ? REAL_C(-1.0) : REAL_C(1.0);
-		planes[count + i].normal = vec_make(i / 2 == 0 ? sign : REAL_C(0.0),
-						    i / 2 == 1 ? sign : REAL_C(0.0),
-						    i / 2 == 2 ? sign : REAL_C(0.0));
+		unit sign = i & 1 ? UNIT_C(-1.0) : UNIT_C(1.0);
+		planes[count + i].normal = dir_make(i / 2 == 0 ? sign : UNIT_C(0.0),
+						    i / 2 == 1 ? sign : UNIT_C(0.0),
+						    i / 2 == 2 ? sign : UNIT_C(0.0));
 		planes[count + i].offset = far_away;
 	}
+	for (i = 0; i < count + 6; i++)
+		normal[i] = dir_to_vec(planes[i].normal);
 	empty_box(lo, hi);
 	for (i = 0; i < count + 6; i++)
 		for (j = i + 1; j < count + 6; j++)
 			for (k = j + 1; k < count + 6; k++) {
 				/* Cramer's rule: p = (d_i (n_j x n_k) + d_j (n_k x n_i) +
 				 * d_k (n_i x n_j)) / (n_i . (n_j x n_k)). */
-				vec3 jk = vec_cross(planes[j].normal, planes[k].normal);
-				real det = vec_dot(planes[i].normal, jk);
+				vec3 jk = vec_cross(normal[j], normal[k]);
+				real det = vec_dot(normal[i], jk);
 				vec3 p;
 				if (!(real_fabs(det) > REAL_C(1e-9)))
 					continue;
 				p = vec_scale(jk, planes[i].offset);
-				p = vec_madd(p, planes[j].offset,
-					     vec_cross(planes[k].normal, planes[i].normal));
-				p = vec_madd(p, planes[k].offset,
-					     vec_cross(planes[i].normal, planes[j].normal));
+				p = vec_madd(p, planes[j].offset, vec_cross(normal[k], normal[i]));
+				p = vec_madd(p, planes[k].offset, vec_cross(normal[i], normal[j]));
 				p = vec_scale(p, real_div(REAL_C(1.0), det));
 				for (m = 0; m < count + 6; m++) {
 					real slack = real_surface_offset(real_max(REAL_C(1.0), vec_max_abs(p)));
-					if (vec_dot(planes[m].normal, p) > planes[m].offset + slack)
+					if (vec_dot(normal[m], p) > planes[m].offset + slack)
 						break;
 				}
 				if (m < count + 6)
@@ -106,7 +107,7 @@ static int object_bounds(const scene *s, const object *o, vec3 *lo, vec3 *hi)
 	case SHAPE_CONE: {
 		/* Each end circle spans r * sqrt(1 - a_i^2) along axis i. */
 		const cone_shape *c = &o->u.cone;
-		vec3 a = c->axis, apex = vec_madd(c->base, c->length, c->axis);
+		vec3 a = dir_to_vec(c->axis), apex = dir_madd(c->base, c->length, c->axis);
 		vec3 disc = vec_make(real_sqrt(real_max(REAL_C(0.0), REAL_C(1.0) - real_mul(a.x, a.x))),
 				     real_sqrt(real_max(REAL_C(0.0), REAL_C(1.0) - real_mul(a.y, a.y))),
 				     real_sqrt(real_max(REAL_C(0.0), REAL_C(1.0) - real_mul(a.z, a.z))));
@@ -375,8 +376,8 @@ static inline real traverse(const scene *s, const ray *r, real tmax, hit *h, int
 	for (i = 0; i < s->unbounded_count; i++)
 		VISIT(s->bvh_index[i]);
 	sr.origin = r->origin;
-	sr.inv = vec_make(real_div(REAL_C(1.0), r->dir.x), real_div(REAL_C(1.0), r->dir.y),
-			  real_div(REAL_C(1.0), r->dir.z));
+	sr.inv = vec_make(real_div_unit(REAL_C(1.0), r->dir.x), real_div_unit(REAL_C(1.0), r->dir.y),
+			  real_div_unit(REAL_C(1.0), r->dir.z));
 	sr.near_x = sr.inv.x < REAL_C(0.0);
 	sr.near_y = sr.inv.y < REAL_C(0.0);
 	sr.near_z = sr.inv.z < REAL_C(0.0);

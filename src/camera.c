@@ -6,16 +6,16 @@
 int camera_init(camera *c, const view *v, int width, int height)
 {
 	vec3 forward = vec_sub(v->at, v->from);
-	vec3 right;
+	dir3 right;
 	if (!(vec_dot2(forward, forward) > 0))
 		return 0;
-	c->forward = vec_normalize(forward);
+	c->forward = dir_normalize(forward);
 	/* Orthonormalise: right = forward x up, then the true up = right x forward. */
-	right = vec_cross(c->forward, vec_normalize(v->up));
-	if (!(vec_length(right) > REAL_C(1e-9)))
+	right = dir_cross(c->forward, dir_normalize(v->up));
+	if (!(unit_sqrt(dir_dot(right, right)) > UNIT_C(1e-9)))
 		return 0;
-	c->right = vec_normalize(right);
-	c->up = vec_cross(c->right, c->forward);
+	c->right = dir_renormalize(right);
+	c->up = dir_cross(c->right, c->forward);
 	c->eye = v->from;
 	c->half_width = real_tan_degrees(real_mul(v->angle, REAL_C(0.5)));
 	c->width = width;
@@ -36,7 +36,7 @@ camera_line camera_line_at(const camera *c, real y)
 	real v = real_mul(real_times_reciprocal(real_from_int(c->height) - (y + y),
 						c->per_width),
 			  c->half_width);
-	line.up_offset = vec_scale(c->up, v);
+	line.up_offset = dir_scale(c->up, v);
 	return line;
 }
 
@@ -47,6 +47,7 @@ ray camera_ray(const camera *c, const camera_line *line, real x)
 	ray r;
 	r.origin = c->eye;
 	/* forward + u right, then the line's v up: in that order, as sums round. */
-	r.dir = vec_normalize(vec_add(vec_madd(c->forward, u, c->right), line->up_offset));
+	r.dir = dir_normalize(vec_add(dir_madd(dir_to_vec(c->forward), u, c->right),
+				      line->up_offset));
 	return r;
 }

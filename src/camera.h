@@ -7,7 +7,7 @@
 
 typedef struct {
 	vec3 eye;
-	vec3 forward, right, up; /* orthonormal, right-handed as NFF is */
+	dir3 forward, right, up; /* orthonormal, right-handed as NFF is */
 	real half_width;         /* tan(angle / 2): half the image plane at unit distance */
 	int width, height;
 	real_reciprocal per_width; /* for dividing by the width: once here, not per ray */

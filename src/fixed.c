@@ -86,6 +86,11 @@ int32_t fixed_sqrt2(int64_t w)
 	return w <= 0 ? 0 : fixed_saturate((int64_t)fixed_isqrt64((uint64_t)w));
 }
 
+int32_t fixed_sqrt30(int32_t u)
+{
+	return u <= 0 ? 0 : (int32_t)fixed_isqrt64((uint64_t)u << 30);
+}
+
 /* 1/sqrt(w) as a fixed_reciprocal, without a square root or a division: w = t 4^k with t
  * in [1/4, 1), so 2^(30 + k) / sqrt(w) = 2^30 y for y = 1/sqrt(t) in (1, 2], which Newton's
  * y (3 - t y^2) / 2 refines from a table of 24 starting values (good to 2^-5) in three

@@ -398,6 +398,16 @@ typedef struct {
 FIXED_KERNEL fixed_reciprocal fixed_reciprocal_of(int32_t d);
 FIXED_KERNEL int32_t fixed_times_reciprocal(int32_t x, fixed_reciprocal r); /* x / d */
 
+/* Q2.30 (unit-length quantities): a b / 2^30 and a dot product / 2^30, rounded and
+ * saturated, keep the format of the factor that is not Q2.30 (Q2.30 when both are);
+ * a / b for a Q16.16 over a Q2.30; x / d in Q2.30 from d's reciprocal. */
+FIXED_KERNEL int32_t fixed_round30(int64_t v); /* v / 2^30, rounded and saturated */
+FIXED_KERNEL int32_t fixed_mul30(int32_t a, int32_t b);
+FIXED_KERNEL int32_t fixed_dot3_30(int32_t ax, int32_t ay, int32_t az, int32_t bx, int32_t by,
+				   int32_t bz);
+FIXED_KERNEL int32_t fixed_div30(int32_t a, int32_t b);
+FIXED_KERNEL int32_t fixed_unit_times_reciprocal(int32_t x, fixed_reciprocal r);
+
 #if !FIXED_NARROW || defined(FIXED_KERNEL_BODIES)
 FIXED_KERNEL int64_t fixed_wide_mul(int32_t a, int32_t b)
 {
@@ -571,6 +581,39 @@ FIXED_KERNEL int32_t fixed_times_reciprocal(int32_t x, fixed_reciprocal r)
 	return (x < 0) != r.negative ? -(int32_t)q : (int32_t)q;
 }
 
+/* Through the 64-bit product and dot product above, rounded at bit 29 and saturated in
+ * one place: not another multiply kernel. */
+FIXED_KERNEL int32_t fixed_round30(int64_t v)
+{
+	return fixed_saturate((v + ((int64_t)1 << 29)) >> 30);
+}
+
+FIXED_KERNEL int32_t fixed_mul30(int32_t a, int32_t b)
+{
+	return fixed_round30(fixed_wide_mul(a, b));
+}
+
+FIXED_KERNEL int32_t fixed_dot3_30(int32_t ax, int32_t ay, int32_t az, int32_t bx, int32_t by,
+				   int32_t bz)
+{
+	return fixed_round30(fixed_dot3_wide(ax, ay, az, bx, by, bz));
+}
+
+FIXED_KERNEL int32_t fixed_div30(int32_t a, int32_t b)
+{
+	if (b == 0)
+		return a >= 0 ? FIXED_MAX : -FIXED_MAX;
+	return fixed_round_div_sat((int64_t)a * ((int64_t)1 << 30), b);
+}
+
+/* The reciprocal's scale over 2^(shift - 14), not 2^shift: 14 more fraction bits. Its
+ * shift is at least 15 (d is at least one LSB), so at least 1 here. */
+FIXED_KERNEL int32_t fixed_unit_times_reciprocal(int32_t x, fixed_reciprocal r)
+{
+	r.shift -= 14;
+	return fixed_times_reciprocal(x, r);
+}
+
 #endif
 
 /* Rounded integer square root of a 64-bit number. */
@@ -578,6 +621,7 @@ uint64_t fixed_isqrt64(uint64_t x);
 
 int32_t fixed_sqrt(int32_t a);      /* of Q16.16 */
 int32_t fixed_sqrt2(int64_t w);     /* of Q32.32, as Q16.16 */
+int32_t fixed_sqrt30(int32_t u);    /* of Q2.30, as Q2.30 */
 int32_t fixed_ratio2(int64_t a, int64_t b); /* a / b of two Q32.32, as Q16.16 */
 /* For dividing by sqrt(w) (w Q32.32 > 0, a squared length): a reciprocal as from
  * fixed_reciprocal_of, good to 2^-29 of the root's exact value (not of a rounded one);

@@ -16,16 +16,17 @@ int hedron_intersect(const scene *s, const object *o, const ray *r, real tmin, r
 	int count = o->u.hedron.count, i, j, face = -1;
 	real best = tmax;
 	for (i = 0; i < count; i++) {
-		real vd = vec_dot(planes[i].normal, r->dir), t;
+		unit vd = dir_dot(planes[i].normal, r->dir);
+		real t;
 		vec3 p;
-		if (vd == REAL_C(0.0))
+		if (vd == UNIT_C(0.0))
 			continue;
-		t = real_div(planes[i].offset - vec_dot(planes[i].normal, r->origin), vd);
+		t = real_div_unit(planes[i].offset - dir_dot_vec(planes[i].normal, r->origin), vd);
 		if (!(t > tmin && t < best))
 			continue;
-		p = vec_madd(r->origin, t, r->dir);
+		p = dir_madd(r->origin, t, r->dir);
 		for (j = 0; j < count; j++)
-			if (j != i && !(vec_dot(planes[j].normal, p) - planes[j].offset < REAL_C(0.0)))
+			if (j != i && !(dir_dot_vec(planes[j].normal, p) - planes[j].offset < REAL_C(0.0)))
 				break;
 		if (j == count) {
 			best = t;
@@ -36,7 +37,7 @@ int hedron_intersect(const scene *s, const object *o, const ray *r, real tmin, r
 		return 0;
 	if (h) {
 		h->t = best;
-		h->point = vec_madd(r->origin, best, r->dir);
+		h->point = dir_madd(r->origin, best, r->dir);
 		h->normal = planes[face].normal;
 		h->shading = h->normal;
 	}
@@ -53,16 +54,16 @@ int hedron_intersect(const scene *s, const object *o, const ray *r, real tmin, r
 	real t;
 
 	for (i = 0; i < count; i++) {
-		real vd = vec_dot(planes[i].normal, r->dir);
-		real vn = vec_dot(planes[i].normal, r->origin) - planes[i].offset;
-		if (vd == REAL_C(0.0)) {
+		unit vd = dir_dot(planes[i].normal, r->dir);
+		real vn = dir_dot_vec(planes[i].normal, r->origin) - planes[i].offset;
+		if (vd == UNIT_C(0.0)) {
 			/* Parallel: outside this slab misses, inside it the plane does not clip. */
 			if (vn > REAL_C(0.0))
 				return 0;
 			continue;
 		}
-		t = real_div(-vn, vd);
-		if (vd < REAL_C(0.0)) {
+		t = real_div_unit(-vn, vd);
+		if (vd < UNIT_C(0.0)) {
 			/* Front face: the ray enters the half-space here. */
 			if (t > tfar)
 				return 0;
@@ -93,7 +94,7 @@ int hedron_intersect(const scene *s, const object *o, const ray *r, real tmin, r
 	}
 	if (h) {
 		h->t = t;
-		h->point = vec_madd(r->origin, t, r->dir);
+		h->point = dir_madd(r->origin, t, r->dir);
 		h->normal = planes[face].normal;
 		h->shading = h->normal;
 	}

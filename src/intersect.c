@@ -44,14 +44,14 @@ static void face_forward(const ray *r, hit *h)
 {
 	h->flat = h->shading.x == h->normal.x && h->shading.y == h->normal.y &&
 		  h->shading.z == h->normal.z;
-	h->front = vec_dot(h->normal, r->dir) < REAL_C(0.0);
+	h->front = dir_dot(h->normal, r->dir) < UNIT_C(0.0);
 	if (!h->front)
-		h->normal = vec_neg(h->normal);
+		h->normal = dir_neg(h->normal);
 	/* A shading normal that is the geometric one turns with it: no product needed. */
 	if (h->flat)
 		h->shading = h->normal;
-	else if (vec_dot(h->shading, h->normal) < REAL_C(0.0))
-		h->shading = vec_neg(h->shading);
+	else if (dir_dot(h->shading, h->normal) < UNIT_C(0.0))
+		h->shading = dir_neg(h->shading);
 }
 
 void origin_terms_init(const scene *s, vec3 origin, origin_terms *k)

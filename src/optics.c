@@ -2,25 +2,46 @@
  * See LICENSE for copyright and licence. */
 #include "optics.h"
 
-vec3 optics_reflect(vec3 d, vec3 n)
+dir3 optics_reflect(dir3 d, dir3 n)
 {
-	return vec_madd(d, real_mul(-REAL_C(2.0), vec_dot(d, n)), n);
+	/* -2 (d.n) as a sum: the same number in floating point, and saturating in Q2.30,
+	 * which holds -2 but not 2 (an LSB off at normal incidence). */
+	unit c = dir_dot(d, n);
+	return dir_madd_unit(d, unit_add(-c, -c), n);
 }
 
-int optics_refract(vec3 d, vec3 n, real eta, vec3 *t)
+int optics_refract(dir3 d, dir3 n, real eta, dir3 *t)
 {
-	real cos_i = -vec_dot(d, n);
+	unit cos_i = -dir_dot(d, n);
+#if REAL_FIXED
+	/* Q2.30 stops short of 2, and eta d reaches eta: past 2 on leaving a dense medium.
+	 * The same t in tangential form keeps every term within unit length: the tangent
+	 * d + cos_i n (length sin_i) times eta is the refracted tangent (length sin_t), and
+	 * t = eta (d + cos_i n) - cos_t n with cos_t^2 = k = 1 - eta^2 sin_i^2. The refracted
+	 * tangent is made only without total internal reflection: then it is within unit
+	 * length, and its components cannot saturate. */
+	dir3 tangent = dir_madd_unit(d, cos_i, n), across;
+	unit k = UNIT_C(1.0) - unit_scale(unit_scale(dir_dot(tangent, tangent), eta), eta);
+	if (!(k > UNIT_C(0.0)))
+		return 0;
+	across = dir_make(unit_scale(tangent.x, eta), unit_scale(tangent.y, eta),
+			  unit_scale(tangent.z, eta));
+	*t = dir_madd_unit(across, -unit_sqrt(k), n);
+	return 1;
+#else
 	real k = REAL_C(1.0) - real_mul(real_mul(eta, eta), REAL_C(1.0) - real_mul(cos_i, cos_i));
 	if (!(k > REAL_C(0.0)))
 		return 0;
 	/* t = eta d + (eta cos_i - sqrt k) n */
-	*t = vec_madd(vec_scale(d, eta), real_mul(eta, cos_i) - real_sqrt(k), n);
+	*t = dir_make(real_mul(d.x, eta), real_mul(d.y, eta), real_mul(d.z, eta));
+	*t = dir_madd_unit(*t, real_mul(eta, cos_i) - real_sqrt(k), n);
 	return 1;
+#endif
 }
 
-real optics_fresnel(real cos_i, real eta)
+real optics_fresnel(unit cosine, real eta)
 {
-	real sin2_t, cos_t, r_par, r_perp;
+	real cos_i = unit_to_real(cosine), sin2_t, cos_t, r_par, r_perp;
 	cos_i = real_min(real_max(cos_i, REAL_C(0.0)), REAL_C(1.0));
 	sin2_t = real_mul(real_mul(eta, eta), REAL_C(1.0) - real_mul(cos_i, cos_i));
 	if (sin2_t >= REAL_C(1.0))

@@ -6,16 +6,16 @@
 #include "vec.h"
 
 /* Mirror direction of d about the unit normal n. */
-vec3 optics_reflect(vec3 d, vec3 n);
+dir3 optics_reflect(dir3 d, dir3 n);
 
 /* Refracts unit d through unit n (n faces against d) with eta = n1 / n2.
  * Returns 0 on total internal reflection (k = 1 - eta^2 (1 - cos^2) <= 0), else 1 and
  * the unit transmitted direction in *t (numerics.md section 5). */
-int optics_refract(vec3 d, vec3 n, real eta, vec3 *t);
+int optics_refract(dir3 d, dir3 n, real eta, dir3 *t);
 
-/* Exact dielectric Fresnel reflectance for unpolarised light; cos_i is the cosine of the
+/* Exact dielectric Fresnel reflectance for unpolarised light; `cosine` is that of the
  * incident angle, eta = n1 / n2. Returns 1 on total internal reflection. */
-real optics_fresnel(real cos_i, real eta);
+real optics_fresnel(unit cosine, real eta);
 
 /* Beer-Lambert transmittance e^(-a d); d < 0 counts as 0 (numerics.md B05) and results
  * below 1e-30 are flushed to 0 so float never goes subnormal (B03). */

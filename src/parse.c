@@ -405,10 +405,10 @@ static int parse_view(parser *p)
 	/* The camera needs a direction and an up that is not along it. */
 	{
 		vec3 dir = vec_sub(v->at, v->from);
-		vec3 side = vec_cross(vec_normalize(dir), vec_normalize(v->up));
+		dir3 side = dir_cross(dir_normalize(dir), dir_normalize(v->up));
 		if (!(vec_dot2(dir, dir) > 0))
 			return fail(&p->lx, p->view_line, "view: 'from' and 'at' are the same point");
-		if (!(vec_length(side) > REAL_C(1e-9)))
+		if (!(unit_sqrt(dir_dot(side, side)) > UNIT_C(1e-9)))
 			return fail(&p->lx, p->view_line,
 				    "view: 'up' is zero or parallel to the view direction");
 	}
@@ -516,10 +516,10 @@ static int parse_sphere(parser *p)
  * polygon has no area. Its components are areas (products of lengths), summed as real2
  * and brought back to size by the largest before normalising. Axis by axis in a loop,
  * component k from the two axes after it: one copy of the arithmetic, not three. */
-static vec3 newell_normal(const vec3 *v, int count)
+static dir3 newell_normal(const vec3 *v, int count)
 {
 	real2 n[3] = {0, 0, 0}, largest = 0;
-	real unit[3];
+	real part[3];
 	int i, k;
 	for (i = 0; i < count; i++) {
 		vec3 a = v[i], b = v[i + 1 == count ? 0 : i + 1];
@@ -534,10 +534,10 @@ static vec3 newell_normal(const vec3 *v, int count)
 	for (k = 0; k < 3; k++)
 		largest = real_max(largest, n[k] < 0 ? -n[k] : n[k]);
 	if (!(largest > 0))
-		return vec_make(REAL_C(0.0), REAL_C(0.0), REAL_C(0.0));
+		return dir_make(UNIT_C(0.0), UNIT_C(0.0), UNIT_C(0.0));
 	for (k = 0; k < 3; k++)
-		unit[k] = real2_ratio(n[k], largest);
-	return vec_normalize(vec_make(unit[0], unit[1], unit[2]));
+		part[k] = real2_ratio(n[k], largest);
+	return dir_normalize(vec_make(part[0], part[1], part[2]));
 }
 
 /* The mean of vertices[0..count), summed as real2 so that many large coordinates cannot
@@ -561,7 +561,8 @@ static int parse_polygon(parser *p, int patch)
 	scene *s = p->s;
 	int line = p->lx.tok_line, i, first = s->vertex_count;
 	long count;
-	vec3 normal, centroid;
+	dir3 normal;
+	vec3 centroid;
 	polygon_shape *poly;
 	object *o;
 
@@ -575,11 +576,16 @@ static int parse_polygon(parser *p, int patch)
 		if (!read_triple(&p->lx, patch ? "patch vertex" : "polygon vertex", 1,
 			      &s->vertices[first + i]))
 			return 0;
-		if (patch && !read_triple(&p->lx, "patch vertex normal", 0, &s->normals[first + i]))
-			return 0;
+		if (patch) {
+			/* Normalised as read; a zero one stays zero until the face's is known. */
+			vec3 n;
+			if (!read_triple(&p->lx, "patch vertex normal", 0, &n))
+				return 0;
+			s->normals[first + i] = dir_normalize(n);
+		}
 	}
 	normal = newell_normal(s->vertices + first, (int)count);
-	if (!(vec_dot2(normal, normal) > 0)) {
+	if (!(dir_dot(normal, normal) > 0)) {
 		warn(p, line, patch ? "patch with zero area" : "polygon with zero area");
 		return 1;
 	}
@@ -590,19 +596,19 @@ static int parse_polygon(parser *p, int patch)
 	poly->normal = normal;
 	/* The plane passes through the centroid: the best fit for slightly non-planar input. */
 	centroid = centroid_of(s->vertices + first, (int)count);
-	poly->offset = vec_dot(poly->normal, centroid);
+	poly->offset = dir_dot_vec(poly->normal, centroid);
 	poly->first = first;
 	poly->count = (int)count;
-	poly->axis = real_fabs(poly->normal.x) > real_fabs(poly->normal.y)
-			     ? (real_fabs(poly->normal.x) > real_fabs(poly->normal.z) ? 0 : 2)
-			     : (real_fabs(poly->normal.y) > real_fabs(poly->normal.z) ? 1 : 2);
+	poly->axis = unit_fabs(poly->normal.x) > unit_fabs(poly->normal.y)
+			     ? (unit_fabs(poly->normal.x) > unit_fabs(poly->normal.z) ? 0 : 2)
+			     : (unit_fabs(poly->normal.y) > unit_fabs(poly->normal.z) ? 1 : 2);
 	for (i = 0; i < count; i++)
 		s->projected[first + i] = polygon_project(s->vertices[first + i], poly->axis);
 	if (patch) {
 		/* A zero vertex normal falls back to the face normal. */
 		for (i = 0; i < count; i++) {
-			vec3 *n = &s->normals[first + i];
-			*n = vec_dot2(*n, *n) > 0 ? vec_normalize(*n) : poly->normal;
+			dir3 *n = &s->normals[first + i];
+			*n = dir_dot(*n, *n) > 0 ? *n : poly->normal;
 		}
 	}
 	s->vertex_count += (int)count;
@@ -651,7 +657,7 @@ static int parse_cone(parser *p)
 		return 0;
 	o->flags |= inside_only;
 	o->u.cone.base = base;
-	o->u.cone.axis = vec_div(axis, length);
+	o->u.cone.axis = dir_normalize(axis);
 	o->u.cone.length = length;
 	o->u.cone.base_radius = base_radius;
 	o->u.cone.apex_radius = apex_radius;
@@ -673,9 +679,9 @@ static int add_halfspace(parser *p, vec3 n, real d, int line)
 	if (s->plane_count == RT_MAX_PLANES)
 		return capacity_error(p, line, "polyhedron planes in the scene", "RT_MAX_PLANES",
 				      RT_MAX_PLANES);
-	/* Divided by the length as vec_normalize does (one reciprocal for all four). */
+	/* Divided by the length as dir_normalize does (one reciprocal for all four). */
 	per_length = real2_reciprocal_sqrt(length2);
-	s->planes[s->plane_count].normal = vec_times_reciprocal(n, per_length);
+	s->planes[s->plane_count].normal = dir_times_reciprocal(n, per_length);
 	s->planes[s->plane_count].offset = real_times_reciprocal(d, per_length);
 	s->plane_count++;
 	return 1;
@@ -754,8 +760,8 @@ static int parse_plane(parser *p)
 	o = new_object(p, SHAPE_PLANE, line);
 	if (!o)
 		return 0;
-	o->u.plane.normal = vec_normalize(normal);
-	o->u.plane.offset = vec_dot(o->u.plane.normal, point);
+	o->u.plane.normal = dir_normalize(normal);
+	o->u.plane.offset = dir_dot_vec(o->u.plane.normal, point);
 	p->s->object_count++;
 	return 1;
 }

@@ -10,7 +10,7 @@
 int plane_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h)
 {
 	origin_term k;
-	k.u.distance = o->u.plane.offset - vec_dot(o->u.plane.normal, r->origin);
+	k.u.distance = o->u.plane.offset - dir_dot_vec(o->u.plane.normal, r->origin);
 	return plane_intersect_from(o, r, &k, tmin, tmax, h);
 }
 
@@ -18,21 +18,22 @@ int plane_intersect_from(const object *o, const ray *r, const origin_term *k, re
 			 real tmax, hit *h)
 {
 	const plane_shape *pl = &o->u.plane;
-	real denom = vec_dot(pl->normal, r->dir), distance = k->u.distance, t;
-	if (denom == REAL_C(0.0))
+	unit denom = dir_dot(pl->normal, r->dir);
+	real distance = k->u.distance, t;
+	if (denom == UNIT_C(0.0))
 		return 0;
 	/* A plane behind the origin or through it (t <= 0) is no hit when tmin >= 0: known
 	 * from the signs, without dividing (costly on small cores). */
-	if (tmin >= REAL_C(0.0) && (distance > REAL_C(0.0)) != (denom > REAL_C(0.0)))
+	if (tmin >= REAL_C(0.0) && (distance > REAL_C(0.0)) != (denom > UNIT_C(0.0)))
 		return 0;
-	t = real_div(distance, denom);
+	t = real_div_unit(distance, denom);
 	if (t > HORIZON_T)
 		t = HORIZON_T;
 	if (!(t > tmin && t < tmax))
 		return 0;
 	if (h) {
 		h->t = t;
-		h->point = vec_madd(r->origin, t, r->dir);
+		h->point = dir_madd(r->origin, t, r->dir);
 		h->normal = pl->normal;
 		h->shading = pl->normal;
 	}

@@ -60,9 +60,9 @@ int polygon_contains(const vec3 *vertices, int count, int axis, real pu, real pv
 
 /* Signed area weight of triangle (a, b, c) about the unit plane normal n: products of
  * two lengths, so a real2. */
-static real2 area_along(vec3 n, vec3 a, vec3 b, vec3 c)
+static real2 area_along(dir3 normal, vec3 a, vec3 b, vec3 c)
 {
-	vec3 e = vec_sub(b, a), f = vec_sub(c, a);
+	vec3 e = vec_sub(b, a), f = vec_sub(c, a), n = dir_to_vec(normal);
 	return real2_scale(real_mul2(e.y, f.z) - real_mul2(e.z, f.y), n.x) +
 	       real2_scale(real_mul2(e.z, f.x) - real_mul2(e.x, f.z), n.y) +
 	       real2_scale(real_mul2(e.x, f.y) - real_mul2(e.y, f.x), n.z);
@@ -70,10 +70,10 @@ static real2 area_along(vec3 n, vec3 a, vec3 b, vec3 c)
 
 /* Shading normal of a patch at p: barycentric interpolation of the vertex normals in
  * the fan triangle (0, i, i+1) that holds p (SPD patches are all triangles). */
-static vec3 patch_normal(const scene *s, const polygon_shape *poly, vec3 p)
+static dir3 patch_normal(const scene *s, const polygon_shape *poly, vec3 p)
 {
 	const vec3 *v = s->vertices + poly->first;
-	const vec3 *vn = s->normals + poly->first;
+	const dir3 *vn = s->normals + poly->first;
 	int i;
 	for (i = 1; i + 1 < poly->count; i++) {
 		real2 whole = area_along(poly->normal, v[0], v[i], v[i + 1]);
@@ -82,11 +82,12 @@ static vec3 patch_normal(const scene *s, const polygon_shape *poly, vec3 p)
 		real2 a2 = whole - a0 - a1;
 		if (whole != 0 && ((a0 >= 0 && a1 >= 0 && a2 >= 0) || i + 2 == poly->count)) {
 			/* Barycentric weights: each area over the whole. */
-			vec3 n = vec_scale(vn[0], real2_ratio(a0, whole));
-			n = vec_madd(n, real2_ratio(a1, whole), vn[i]);
-			n = vec_madd(n, real2_ratio(a2, whole), vn[i + 1]);
-			n = vec_normalize(n);
-			return vec_dot2(n, n) > 0 ? n : poly->normal;
+			vec3 n = vec_scale(dir_to_vec(vn[0]), real2_ratio(a0, whole));
+			dir3 unit_n;
+			n = dir_madd(n, real2_ratio(a1, whole), vn[i]);
+			n = dir_madd(n, real2_ratio(a2, whole), vn[i + 1]);
+			unit_n = dir_normalize(n);
+			return dir_dot(unit_n, unit_n) > 0 ? unit_n : poly->normal;
 		}
 	}
 	return poly->normal;
@@ -96,21 +97,21 @@ int polygon_intersect(const scene *s, const object *o, const ray *r, real tmin, 
 		      hit *h)
 {
 	const polygon_shape *poly = &o->u.polygon;
-	real denom = vec_dot(poly->normal, r->dir);
+	unit denom = dir_dot(poly->normal, r->dir);
 	real t;
 	vec3 p;
 
 	/* A ray parallel to the plane (or lying in it) misses (numerics.md G07, G08). */
-	if (denom == REAL_C(0.0))
+	if (denom == UNIT_C(0.0))
 		return 0;
 	/* An opaque polygon is one-sided: seen from behind it is not there. A shadow query
 	 * (h == NULL) is blocked from either side: light does not pass through its back. */
-	if (denom > REAL_C(0.0) && !(o->flags & OBJ_TWO_SIDED) && h)
+	if (denom > UNIT_C(0.0) && !(o->flags & OBJ_TWO_SIDED) && h)
 		return 0;
-	t = real_div(poly->offset - vec_dot(poly->normal, r->origin), denom);
+	t = real_div_unit(poly->offset - dir_dot_vec(poly->normal, r->origin), denom);
 	if (!(t > tmin && t < tmax))
 		return 0;
-	p = vec_madd(r->origin, t, r->dir);
+	p = dir_madd(r->origin, t, r->dir);
 	{
 		/* The point is tested snapped to a grid a little coarser than its rounding
 		 * error: a ray meant exactly through a shared edge or vertex then lands exactly

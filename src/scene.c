@@ -46,7 +46,7 @@ void scene_measure(const scene *s, real *extent, real *feature)
 		} else if (RT_SHAPE_CONE && o->kind == SHAPE_CONE) {
 			real r = real_max(o->u.cone.base_radius, o->u.cone.apex_radius);
 			cover(extent, o->u.cone.base, r);
-			cover(extent, vec_madd(o->u.cone.base, o->u.cone.length, o->u.cone.axis), r);
+			cover(extent, dir_madd(o->u.cone.base, o->u.cone.length, o->u.cone.axis), r);
 			*feature = real_min(*feature, r);
 			/* A steep cone (radius changing much faster than its length) is as fine
 			 * as its length over its slope. */

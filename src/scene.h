@@ -46,7 +46,7 @@ typedef struct {
  * are scene.normals at the same indices. `normal` and `offset` give its plane n.x = offset;
  * `axis` is the coordinate dropped to project it to 2D (the normal's largest). */
 typedef struct {
-	vec3 normal;
+	dir3 normal;
 	real offset;
 	int first, count;
 	int axis;
@@ -54,7 +54,8 @@ typedef struct {
 
 /* Base centre and radius, unit axis towards the apex end, its length and apex radius. */
 typedef struct {
-	vec3 base, axis;
+	vec3 base;
+	dir3 axis;
 	real length;
 	real base_radius, apex_radius;
 	real slope; /* (apex_radius - base_radius) / length */
@@ -66,7 +67,7 @@ typedef struct {
 } hedron_shape;
 
 typedef struct {
-	vec3 normal; /* unit */
+	dir3 normal; /* unit */
 	real offset; /* n.x = offset */
 } plane_shape;
 
@@ -85,7 +86,7 @@ typedef struct {
 } object;
 
 typedef struct {
-	vec3 normal;
+	dir3 normal;
 	real offset;
 } halfspace;
 
@@ -124,7 +125,7 @@ typedef struct {
 	light lights[RT_MAX_LIGHTS];
 	object objects[RT_MAX_OBJECTS];
 	vec3 vertices[RT_MAX_VERTICES];
-	vec3 normals[RT_MAX_VERTICES];
+	dir3 normals[RT_MAX_VERTICES];
 	vec2 projected[RT_MAX_VERTICES]; /* vertices projected for the point-in-polygon test */
 	halfspace planes[RT_MAX_PLANES];
 

@@ -11,7 +11,7 @@
 
 typedef struct {
 	vec3 origin;
-	vec3 dir; /* unit length */
+	dir3 dir; /* unit length */
 } ray;
 
 /* Where an infinite plane meets a ray that reaches it beyond REAL_FAR: the horizon
@@ -21,8 +21,8 @@ typedef struct {
 typedef struct {
 	real t;
 	vec3 point;
-	vec3 normal;  /* geometric normal, unit; outward from the shape, then faced to the ray */
-	vec3 shading; /* shading normal (interpolated on patches), on the same side as normal */
+	dir3 normal;  /* geometric normal, unit; outward from the shape, then faced to the ray */
+	dir3 shading; /* shading normal (interpolated on patches), on the same side as normal */
 	int object;   /* index into scene.objects */
 	int front;    /* 1 when the ray arrived from the outside of the surface */
 	int flat;     /* 1 when shading is the geometric normal (all but patches): set with front */

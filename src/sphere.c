@@ -45,7 +45,7 @@ void origin_term_init(const object *o, vec3 origin, origin_term *k)
 		k->f = vec_sub(origin, o->u.sphere.center);
 		k->u.c = vec_dot2(k->f, k->f) - o->u.sphere.radius2;
 	} else if (o->kind == SHAPE_PLANE) {
-		k->u.distance = o->u.plane.offset - vec_dot(o->u.plane.normal, origin);
+		k->u.distance = o->u.plane.offset - dir_dot_vec(o->u.plane.normal, origin);
 	}
 }
 
@@ -55,7 +55,7 @@ int sphere_intersect_from(const object *o, const ray *r, const origin_term *k, r
 	const sphere_shape *s = &o->u.sphere;
 	vec3 f = k->f;
 	real2 c = k->u.c;
-	real b = vec_dot(f, r->dir), t0, t1, t;
+	real b = dir_dot_vec(r->dir, f), t0, t1, t;
 	/* Outside the sphere and moving away from its centre: both roots lie behind the
 	 * origin (their product c/a > 0, their sum -2b/a < 0). Most rays miss most spheres,
 	 * and this costs nothing. */
@@ -86,10 +86,10 @@ int sphere_intersect_from(const object *o, const ray *r, const origin_term *k, r
 	 * below b^2 - c + c 2^-10. Rays that miss need neither a nor its product. */
 	if (c > 0 && real_mul2(b, b) - c < -(real2_error_bound(b, c) + real2_unit_slack(c)))
 		return 0;
-	a = vec_dot(r->dir, r->dir);
+	a = unit_to_real(dir_dot(r->dir, r->dir));
 	/* a = 1 exactly (often, in every type) divides by nothing and scales by nothing:
 	 * the same numbers without the division and the product. */
-	v = vec_madd(f, a == REAL_C(1.0) ? -b : -real_div(b, a), r->dir);
+	v = dir_madd(f, a == REAL_C(1.0) ? -b : -real_div(b, a), r->dir);
 	real2 perpendicular = s->radius2 - vec_dot2(v, v);
 	real2 discriminant = perpendicular;
 	if (a != REAL_C(1.0))
@@ -106,11 +106,11 @@ int sphere_intersect_from(const object *o, const ray *r, const origin_term *k, r
 		return 0;
 	if (h) {
 		h->t = t;
-		h->point = vec_madd(r->origin, t, r->dir);
+		h->point = dir_madd(r->origin, t, r->dir);
 		/* Normalised rather than divided by r: a hit point a little off the surface
 		 * would otherwise give a normal that is not unit length, and the reflected ray
 		 * with it (the sphere test assumes unit directions). */
-		h->normal = vec_normalize(vec_sub(h->point, s->center));
+		h->normal = dir_normalize(vec_sub(h->point, s->center));
 		h->shading = h->normal;
 	}
 	return 1;

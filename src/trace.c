@@ -53,27 +53,27 @@ void tracer_init(tracer *t, const scene *s, int depth, real cutoff)
 		if (o->kind != SHAPE_SPHERE && o->kind != SHAPE_HEDRON)
 			continue;
 		probe.origin = s->camera.from;
-		probe.dir = vec_make(REAL_C(0.0), REAL_C(0.0), REAL_C(1.0));
+		probe.dir = dir_make(UNIT_C(0.0), UNIT_C(0.0), UNIT_C(1.0));
 		if (object_intersect(s, i, &probe, REAL_C(0.0), REAL_FAR, &h) &&
-		    vec_dot(h.normal, probe.dir) > REAL_C(0.0) &&
+		    dir_dot(h.normal, probe.dir) > UNIT_C(0.0) &&
 		    t->eye_media.count < RT_MAX_MEDIA)
 			t->eye_media.material[t->eye_media.count++] = o->material;
 	}
 }
 
-vec3 trace_offset(vec3 p, vec3 side, real t)
+vec3 trace_offset(vec3 p, dir3 side, real t)
 {
 #if RT_OFFSET_FIXED
 	/* The classic fixed epsilon, for comparison only: too small far from the origin,
 	 * too large for small objects (numerics.md section 2). */
 	(void)t;
-	return vec_madd(p, REAL_C(1e-4), side);
+	return dir_madd(p, REAL_C(1e-4), side);
 #else
 	/* The hit point's rounding error scales with its own size and the ray's length, not
 	 * with the unit of length: a scene modelled in metres with 50 um parts needs offsets
 	 * far below 1e-4. The small floor keeps a point at the origin off its surface. */
 	real scale = real_max(REAL_C(0.0009765625), real_max(vec_max_abs(p), real_fabs(t)));
-	return vec_madd(p, real_surface_offset(scale), side);
+	return dir_madd(p, real_surface_offset(scale), side);
 #endif
 }
 
@@ -125,7 +125,7 @@ static vec3 departure_point(departure *d)
 }
 
 /* Diffuse and highlight from every light the surface faces, through shadow rays. */
-static vec3 shade_lights(tracer *t, departure *from, const material *mat, vec3 mirror_dir,
+static vec3 shade_lights(tracer *t, departure *from, const material *mat, dir3 mirror_dir,
 			 int level)
 {
 	const scene *s = t->scene;
@@ -136,9 +136,11 @@ static vec3 shade_lights(tracer *t, departure *from, const material *mat, vec3 m
 		const light *l = &s->lights[i];
 		vec3 to_light = vec_sub(l->position, h->point);
 		real2 distance2 = vec_dot2(to_light, to_light);
-		real distance, cosine, diffuse, highlight, pass;
+		real distance, diffuse, highlight, pass;
+		unit cosine;
 		real_reciprocal per_distance;
-		vec3 dir, lit;
+		dir3 dir;
+		vec3 lit;
 		ray shadow;
 		if (!(distance2 > 0))
 			continue;
@@ -146,19 +148,19 @@ static vec3 shade_lights(tracer *t, departure *from, const material *mat, vec3 m
 		 * no root and no division). */
 		per_distance = real2_reciprocal_sqrt(distance2);
 		distance = real2_sqrt_by(distance2, per_distance);
-		dir = vec_times_reciprocal(to_light, per_distance);
+		dir = dir_times_reciprocal(to_light, per_distance);
 		/* A light behind the surface sends no shadow ray (SPD rule). */
-		cosine = vec_dot(h->normal, dir);
-		if (cosine <= REAL_C(0.0))
+		cosine = dir_dot(h->normal, dir);
+		if (cosine <= UNIT_C(0.0))
 			continue;
 		if (!h->flat)
-			cosine = real_max(vec_dot(h->shading, dir), REAL_C(0.0));
-		diffuse = real_mul(mat->kd, cosine);
+			cosine = real_max(dir_dot(h->shading, dir), UNIT_C(0.0));
+		diffuse = real_mul_unit(mat->kd, cosine);
 		highlight = REAL_C(0.0);
 		if (mat->ks > REAL_C(0.0)) {
-			real c = vec_dot(mirror_dir, dir);
-			if (c > REAL_C(0.0))
-				highlight = real_mul(mat->ks, real_pow(c, mat->shine));
+			unit c = dir_dot(mirror_dir, dir);
+			if (c > UNIT_C(0.0))
+				highlight = real_mul(mat->ks, real_pow(unit_to_real(c), mat->shine));
 		}
 		if (!(diffuse > REAL_C(0.0)) && !(highlight > REAL_C(0.0)))
 			continue;
@@ -195,7 +197,7 @@ static vec3 shade_lights(tracer *t, departure *from, const material *mat, vec3 m
 }
 
 /* Mirror ray of weight `ks` leaving the surface on the ray's side. */
-static vec3 trace_mirror(tracer *t, departure *from, vec3 dir, int level, real weight, real ks,
+static vec3 trace_mirror(tracer *t, departure *from, dir3 dir, int level, real weight, real ks,
 			 const media *m)
 {
 	ray next;
@@ -215,7 +217,7 @@ static vec3 trace_refraction(tracer *t, const ray *r, departure *from, const mat
 	int mat_index = s->objects[h->object].material;
 	media next_media;
 	real eta;
-	vec3 dir;
+	dir3 dir;
 	ray next;
 
 	media_cross(m, mat_index, h->front, &next_media);
@@ -223,7 +225,7 @@ static vec3 trace_refraction(tracer *t, const ray *r, departure *from, const mat
 	if (!optics_refract(r->dir, h->normal, eta, &dir))
 		return vec_mul(mat->color, trace_mirror(t, from, optics_reflect(r->dir, h->normal),
 							level, weight, mat->kt, m));
-	next.origin = trace_offset(h->point, vec_neg(h->normal), h->t);
+	next.origin = trace_offset(h->point, dir_neg(h->normal), h->t);
 	next.dir = dir;
 	t->stats.refract_rays++;
 	return vec_scale(vec_mul(mat->color,
@@ -240,7 +242,8 @@ static vec3 trace_ray(tracer *t, const ray *r, int level, real weight, const med
 	int absorbing = absorb && (absorb->x > REAL_C(0.0) || absorb->y > REAL_C(0.0) ||
 				   absorb->z > REAL_C(0.0));
 	const material *mat;
-	vec3 color, mirror_dir;
+	vec3 color;
+	dir3 mirror_dir;
 	real ks;
 	hit h;
 	departure from;
@@ -268,7 +271,7 @@ static vec3 trace_ray(tracer *t, const ray *r, int level, real weight, const med
 	 * the surface (possible on patches), reflect about the geometric normal instead
 	 * (the same ray when the two normals are one). */
 	mirror_dir = optics_reflect(r->dir, h.shading);
-	if (!h.flat && vec_dot(mirror_dir, h.normal) <= REAL_C(0.0))
+	if (!h.flat && dir_dot(mirror_dir, h.normal) <= UNIT_C(0.0))
 		mirror_dir = optics_reflect(r->dir, h.normal);
 
 	from.h = &h;

@@ -38,6 +38,6 @@ vec3 tracer_eye(tracer *t, const ray *r, int *hit_object);
 
 /* The offset origin of a ray leaving a surface at p on the side `side` points to:
  * moved by REAL_OFFSET times the scale of p's rounding error (numerics.md section 2). */
-vec3 trace_offset(vec3 p, vec3 side, real t);
+vec3 trace_offset(vec3 p, dir3 side, real t);
 
 #endif

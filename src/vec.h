@@ -1,4 +1,5 @@
-/* vec.h - three-component vectors (points, directions, normals and colours).
+/* vec.h - three-component vectors: vec3 for points and colours, dir3 for directions and
+ * normals.
  * Small inline functions so each vector expression reads like its maths.
  * See LICENSE for copyright and licence. */
 #ifndef RT_VEC_H
@@ -17,6 +18,21 @@ static inline vec3 vec_make(real x, real y, real z)
 	v.y = y;
 	v.z = z;
 	return v;
+}
+
+/* A unit vector (a direction, a normal), or a sum of two scaled ones: components of
+ * type `unit`, Q2.30 in fixed point (real.h). */
+typedef struct {
+	unit x, y, z;
+} dir3;
+
+static inline dir3 dir_make(unit x, unit y, unit z)
+{
+	dir3 d;
+	d.x = x;
+	d.y = y;
+	d.z = z;
+	return d;
 }
 
 /* On the M0 (small flash) the larger operations are one out-of-line copy each, defined
@@ -38,14 +54,34 @@ VEC_FUNCTION real2 vec_dot2(vec3 a, vec3 b);
 VEC_FUNCTION real vec_length(vec3 a);
 VEC_FUNCTION vec3 vec_div(vec3 a, real s);
 VEC_FUNCTION vec3 vec_times_reciprocal(vec3 a, real_reciprocal r);
-VEC_FUNCTION vec3 vec_normalize(vec3 a);
 VEC_FUNCTION real vec_max_abs(vec3 a);
+VEC_FUNCTION dir3 dir_times_reciprocal(vec3 a, real_reciprocal r);
+VEC_FUNCTION dir3 dir_normalize(vec3 a);
+VEC_FUNCTION vec3 dir_madd(vec3 a, real s, dir3 b);
+VEC_FUNCTION vec3 dir_scale(dir3 a, real s);
+VEC_FUNCTION dir3 dir_madd_unit(dir3 a, unit s, dir3 b);
+VEC_FUNCTION dir3 dir_cross(dir3 a, dir3 b);
+VEC_FUNCTION vec3 dir_to_vec(dir3 a);
 
 static inline vec3 vec_neg(vec3 a) { return vec_make(-a.x, -a.y, -a.z); }
 static inline real vec_dot(vec3 a, vec3 b)
 {
 	return real_dot3(a.x, a.y, a.z, b.x, b.y, b.z);
 }
+static inline dir3 dir_neg(dir3 a) { return dir_make(-a.x, -a.y, -a.z); }
+/* The cosine between two unit vectors. */
+static inline unit dir_dot(dir3 a, dir3 b)
+{
+	return unit_dot3(a.x, a.y, a.z, b.x, b.y, b.z);
+}
+/* A position's (or a length's) component along a unit vector. */
+static inline real dir_dot_vec(dir3 d, vec3 v)
+{
+	return real_dot3_unit(d.x, d.y, d.z, v.x, v.y, v.z);
+}
+/* A dir3 scaled to unit length again (the camera's cross products): normalising does not
+ * depend on the scale of the components, so fixed point's Q2.30 takes vec3's path. */
+static inline dir3 dir_renormalize(dir3 a) { return dir_normalize(vec_make(a.x, a.y, a.z)); }
 static inline real vec_get(vec3 a, int axis) { return axis == 0 ? a.x : axis == 1 ? a.y : a.z; }
 static inline int vec_is_finite(vec3 a)
 {
@@ -114,13 +150,56 @@ VEC_FUNCTION vec3 vec_times_reciprocal(vec3 a, real_reciprocal r)
 			real_times_reciprocal(a.z, r));
 }
 
+/* a divided by the length whose reciprocal r is, as a unit vector. */
+VEC_FUNCTION dir3 dir_times_reciprocal(vec3 a, real_reciprocal r)
+{
+	return dir_make(unit_times_reciprocal(a.x, r), unit_times_reciprocal(a.y, r),
+			unit_times_reciprocal(a.z, r));
+}
+
 /* Unit vector along a; the zero vector stays zero (callers reject it first). Divided by
  * its exact length, not a rounded one: fixed point takes the reciprocal straight from
- * the squared length (real2_reciprocal_sqrt), floating point divides by the root. */
-VEC_FUNCTION vec3 vec_normalize(vec3 a)
+ * the squared length (real2_reciprocal_sqrt), floating point divides by the root. A
+ * vector with no square (zero in fixed point, where unit and real are both int32_t; too
+ * small to square in floating point, where they are one type) is kept as it is. */
+VEC_FUNCTION dir3 dir_normalize(vec3 a)
 {
 	real2 w = vec_dot2(a, a);
-	return w > 0 ? vec_times_reciprocal(a, real2_reciprocal_sqrt(w)) : a;
+	return w > 0 ? dir_times_reciprocal(a, real2_reciprocal_sqrt(w)) : dir_make(a.x, a.y, a.z);
+}
+
+/* a + s*b: a point moved along a direction. */
+VEC_FUNCTION vec3 dir_madd(vec3 a, real s, dir3 b)
+{
+	return vec_make(real_add(a.x, real_mul_unit(s, b.x)), real_add(a.y, real_mul_unit(s, b.y)),
+			real_add(a.z, real_mul_unit(s, b.z)));
+}
+
+/* s*a: a length along a direction, as a vector. */
+VEC_FUNCTION vec3 dir_scale(dir3 a, real s)
+{
+	return vec_make(real_mul_unit(s, a.x), real_mul_unit(s, a.y), real_mul_unit(s, a.z));
+}
+
+/* a + s*b for directions and a cosine: a reflection, a tangent. */
+VEC_FUNCTION dir3 dir_madd_unit(dir3 a, unit s, dir3 b)
+{
+	return dir_make(unit_add(a.x, unit_mul(s, b.x)), unit_add(a.y, unit_mul(s, b.y)),
+			unit_add(a.z, unit_mul(s, b.z)));
+}
+
+VEC_FUNCTION dir3 dir_cross(dir3 a, dir3 b)
+{
+	return dir_make(unit_mul(a.y, b.z) - unit_mul(a.z, b.y),
+			unit_mul(a.z, b.x) - unit_mul(a.x, b.z),
+			unit_mul(a.x, b.y) - unit_mul(a.y, b.x));
+}
+
+/* A unit vector as a vec3 of reals, where its precision matters little (bounds, the
+ * blend of a patch's vertex normals). */
+VEC_FUNCTION vec3 dir_to_vec(dir3 a)
+{
+	return vec_make(unit_to_real(a.x), unit_to_real(a.y), unit_to_real(a.z));
 }
 
 /* Largest absolute component: the scale of a point's rounding error. */

@@ -12,7 +12,7 @@ ray test_ray(vec3 origin, vec3 dir)
 {
 	ray r;
 	r.origin = origin;
-	r.dir = vec_normalize(dir);
+	r.dir = dir_normalize(dir);
 	return r;
 }
 

@@ -63,10 +63,26 @@ static inline real test_real(double x)
 		return -REAL_MAX;
 	return (real)(v < 0 ? v - 0.5 : v + 0.5);
 }
+/* The same for a unit (Q2.30: 2^30 is 1.0). */
+static inline double test_unit_double(unit x)
+{
+	return x / 1073741824.0;
+}
+static inline unit test_unit(double x)
+{
+	double v = x * 1073741824.0;
+	if (!(v < 2147483647.0))
+		return INT32_MAX;
+	if (!(v > -2147483647.0))
+		return -INT32_MAX;
+	return (unit)(v < 0 ? v - 0.5 : v + 0.5);
+}
 #else
 #define test_double(x) ((double)(x))
 #define test_double2(x) ((double)(x))
 #define test_real(x) ((real)(x))
+#define test_unit_double(x) ((double)(x))
+#define test_unit(x) ((unit)(x))
 #endif
 
 /* Numbers in case tables: `real` in floating point, rounded where written (REAL_C); in
@@ -76,10 +92,12 @@ static inline real test_real(double x)
 typedef double case_real;
 #define CASE_C(x) (x)
 #define CASE_REAL(x, shift) test_real(ldexp((x), (shift)))
+#define CASE_UNIT(x) test_unit(x)
 #else
 typedef real case_real;
 #define CASE_C(x) REAL_C(x)
 #define CASE_REAL(x, shift) ((void)(shift), (x))
+#define CASE_UNIT(x) (x)
 #endif
 
 /* The same for a real2 (a squared length). */
@@ -89,6 +107,12 @@ typedef real case_real;
 
 /* A vector of literals, each as `real`. */
 #define VEC_C(x, y, z) vec_make(REAL_C(x), REAL_C(y), REAL_C(z))
+
+/* A unit vector of literals, and a check on a unit (a cosine, a direction's component). */
+#define DIR_C(x, y, z) dir_make(UNIT_C(x), UNIT_C(y), UNIT_C(z))
+#define CHECK_UNIT(actual, expected, tol)                                                    \
+	test_check_near(test_unit_double(actual), (double)(expected), (double)(tol), __FILE__,   \
+			__LINE__, #actual)
 
 /* A check on a `real` against a double, in units. */
 #define CHECK_REAL(actual, expected, tol)                                                    \

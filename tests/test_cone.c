@@ -145,7 +145,7 @@ static object make_cone(const cone_case *k, int shift)
 	o.material = 0;
 	o.line = 0;
 	o.u.cone.base = base;
-	o.u.cone.axis = vec_scale(axis, real_div(REAL_C(1.0), length));
+	o.u.cone.axis = dir_normalize(axis);
 	o.u.cone.length = length;
 	o.u.cone.base_radius = CASE_REAL(k->base_radius, shift);
 	o.u.cone.apex_radius = CASE_REAL(k->apex_radius, shift);
@@ -175,7 +175,7 @@ static void run_case(const cone_case *k)
 	int got;
 
 	r.origin = scaled(k->o, shift);
-	r.dir = vec_normalize(scaled(k->d, 0));
+	r.dir = dir_normalize(scaled(k->d, 0));
 	got = cone_intersect(&o, &r, CASE_REAL(k->tmin, shift), REAL_MAX, &h);
 	snprintf(what, sizeof what, "%s: %s", k->id, k->hit ? "expected a hit" : "expected a miss");
 	if (!test_check(got == k->hit, __FILE__, __LINE__, what))
@@ -191,14 +191,14 @@ static void run_case(const cone_case *k)
 	/* The point is on the ray at t. */
 	snprintf(what, sizeof what, "%s point.z", k->id);
 	test_check_near(test_double(h.point.z),
-			test_double(r.origin.z) + test_double(h.t) * test_double(r.dir.z), P_TOL,
+			test_double(r.origin.z) + test_double(h.t) * test_unit_double(r.dir.z), P_TOL,
 			__FILE__, __LINE__, what);
 	snprintf(what, sizeof what, "%s normal.x", k->id);
-	test_check_near(test_double(h.normal.x), nx / len, N_TOL, __FILE__, __LINE__, what);
+	test_check_near(test_unit_double(h.normal.x), nx / len, N_TOL, __FILE__, __LINE__, what);
 	snprintf(what, sizeof what, "%s normal.y", k->id);
-	test_check_near(test_double(h.normal.y), ny / len, N_TOL, __FILE__, __LINE__, what);
+	test_check_near(test_unit_double(h.normal.y), ny / len, N_TOL, __FILE__, __LINE__, what);
 	snprintf(what, sizeof what, "%s normal.z", k->id);
-	test_check_near(test_double(h.normal.z), nz / len, N_TOL, __FILE__, __LINE__, what);
+	test_check_near(test_unit_double(h.normal.z), nz / len, N_TOL, __FILE__, __LINE__, what);
 	snprintf(what, sizeof what, "%s: shading normal = normal", k->id);
 	test_check(h.shading.x == h.normal.x && h.shading.y == h.normal.y &&
 		   h.shading.z == h.normal.z, __FILE__, __LINE__, what);
@@ -211,13 +211,13 @@ static void test_interval(void)
 	ray r;
 	hit h;
 	r.origin = vec_make(REAL_C(-5.0), REAL_C(0.0), REAL_C(1.0));
-	r.dir = vec_make(REAL_C(1.0), REAL_C(0.0), REAL_C(0.0));
+	r.dir = DIR_C(1.0, 0.0, 0.0);
 	CHECK(!cone_intersect(&o, &r, REAL_C(0.0), REAL_C(3.9), &h));
 	CHECK(cone_intersect(&o, &r, REAL_C(0.0), REAL_C(4.1), &h));
 	/* Only the far root inside (4.5, 5.9) would do, and it is at 6. */
 	CHECK(!cone_intersect(&o, &r, REAL_C(4.5), REAL_C(5.9), &h));
 	/* Behind the origin: nothing. */
-	r.dir = vec_make(REAL_C(-1.0), REAL_C(0.0), REAL_C(0.0));
+	r.dir = DIR_C(-1.0, 0.0, 0.0);
 	CHECK(!cone_intersect(&o, &r, REAL_C(0.0), REAL_MAX, &h));
 }
 

@@ -37,7 +37,7 @@ static void set_cube(const frame *f)
 				offset += n[k] * f->move[k];
 			}
 			s.planes[s.plane_count].normal =
-				vec_make(test_real(n[0]), test_real(n[1]), test_real(n[2]));
+				dir_make(test_unit(n[0]), test_unit(n[1]), test_unit(n[2]));
 			s.planes[s.plane_count].offset = test_real(ldexp(offset, world_shift));
 			s.plane_count++;
 		}
@@ -154,15 +154,15 @@ static void run_case(const object *o, const hedron_case *k)
 	if (k->normal == NORMAL_EXACT) {
 		snprintf(what, sizeof what, "%s: normal (%g, %g, %g)", k->id, (double)k->n[0],
 			 (double)k->n[1], (double)k->n[2]);
-		test_check(h.normal.x == CASE_REAL(k->n[0], 0) &&
-				   h.normal.y == CASE_REAL(k->n[1], 0) &&
-				   h.normal.z == CASE_REAL(k->n[2], 0),
+		test_check(h.normal.x == CASE_UNIT(k->n[0]) &&
+				   h.normal.y == CASE_UNIT(k->n[1]) &&
+				   h.normal.z == CASE_UNIT(k->n[2]),
 			   __FILE__, __LINE__, what);
 	} else if (k->normal == NORMAL_PLUS_X_OR_Y) {
 		snprintf(what, sizeof what, "%s: normal +x or +y", k->id);
-		test_check(h.normal.z == REAL_C(0.0) &&
-				   ((h.normal.x == REAL_C(1.0) && h.normal.y == REAL_C(0.0)) ||
-				    (h.normal.x == REAL_C(0.0) && h.normal.y == REAL_C(1.0))),
+		test_check(h.normal.z == UNIT_C(0.0) &&
+				   ((h.normal.x == UNIT_C(1.0) && h.normal.y == UNIT_C(0.0)) ||
+				    (h.normal.x == UNIT_C(0.0) && h.normal.y == UNIT_C(1.0))),
 			   __FILE__, __LINE__, what);
 	}
 }
@@ -176,17 +176,17 @@ static void test_bad_direction(const object *o)
 	world_shift = 0;
 	set_cube(&unit_cube);
 #if !REAL_FIXED
-	r.dir = vec_make(REAL_C(NAN), REAL_C(NAN), REAL_C(NAN));
+	r.dir = dir_make(REAL_C(NAN), REAL_C(NAN), REAL_C(NAN));
 	r.origin = vec_make(0, 0, -5);
 	CHECK(!hedron_intersect(&s, o, &r, 0, REAL_MAX, NULL));
 	r.origin = vec_make(0, 0, 0);
 	CHECK(!hedron_intersect(&s, o, &r, 0, REAL_MAX, NULL));
 	/* One NaN component is enough to poison every plane it meets. */
-	r.dir = vec_make(REAL_C(NAN), 0, 1);
+	r.dir = dir_make(REAL_C(NAN), 0, 1);
 	CHECK(!hedron_intersect(&s, o, &r, 0, REAL_MAX, NULL));
 #endif
 	r.origin = vec_make(REAL_C(0.0), REAL_C(0.0), REAL_C(0.0));
-	r.dir = vec_normalize(vec_make(REAL_C(0.0), REAL_C(0.0), REAL_C(0.0)));
+	r.dir = dir_normalize(vec_make(REAL_C(0.0), REAL_C(0.0), REAL_C(0.0)));
 	CHECK(!hedron_intersect(&s, o, &r, REAL_C(0.0), REAL_MAX, NULL));
 	r.origin = vec_make(REAL_C(0.0), REAL_C(0.0), REAL_C(-5.0));
 	CHECK(!hedron_intersect(&s, o, &r, REAL_C(0.0), REAL_MAX, NULL));
@@ -305,9 +305,9 @@ static void watertight(const char *name, const frame *f)
 				ln[i] = signs[i];
 				to_world(f, ln, face, 0);
 				/* Q16.16: the plane normals are rounded to half an LSB. */
-				if (fabs(test_double(h.normal.x) - face[0]) < FACE_TOL &&
-				    fabs(test_double(h.normal.y) - face[1]) < FACE_TOL &&
-				    fabs(test_double(h.normal.z) - face[2]) < FACE_TOL)
+				if (fabs(test_unit_double(h.normal.x) - face[0]) < FACE_TOL &&
+				    fabs(test_unit_double(h.normal.y) - face[1]) < FACE_TOL &&
+				    fabs(test_unit_double(h.normal.z) - face[2]) < FACE_TOL)
 					face_ok = 1;
 			}
 			wrong_face += !face_ok;

@@ -18,19 +18,19 @@
 
 /* Incident direction at angle theta (radians) to the normal (0, 0, 1), travelling down:
  * built in double, rounded once. */
-static vec3 incident(double theta)
+static dir3 incident(double theta)
 {
-	return vec_make(test_real(sin(theta)), REAL_C(0), test_real(-cos(theta)));
+	return dir_make(test_unit(sin(theta)), UNIT_C(0), test_unit(-cos(theta)));
 }
 
-static const vec3 up = {REAL_C(0.0), REAL_C(0.0), REAL_C(1.0)};
+static const dir3 up = {UNIT_C(0.0), UNIT_C(0.0), UNIT_C(1.0)};
 
 /* |v| - 1, taken in long double so the check does not add its own rounding. */
-static double length_error(vec3 v)
+static double length_error(dir3 v)
 {
 #if REAL_FIXED
-	long double x = (long double)test_double(v.x), y = (long double)test_double(v.y),
-		    z = (long double)test_double(v.z);
+	long double x = (long double)test_unit_double(v.x), y = (long double)test_unit_double(v.y),
+		    z = (long double)test_unit_double(v.z);
 #else
 	long double x = v.x, y = v.y, z = v.z;
 #endif
@@ -40,37 +40,38 @@ static double length_error(vec3 v)
 /* R01, R06: normal incidence. */
 static void test_normal_incidence(void)
 {
-	vec3 t;
+	dir3 t;
 	/* Air to glass: straight through, exactly; R = ((1 - 1.5) / (1 + 1.5))^2 = 0.04. */
-	CHECK(optics_refract(VEC_C(0, 0, -1), up, real_div(REAL_C(1.0), GLASS), &t));
-	CHECK(t.x == REAL_C(0.0) && t.y == REAL_C(0.0) && t.z == REAL_C(-1.0));
-	CHECK_REAL(optics_fresnel(REAL_C(1.0), real_div(REAL_C(1.0), GLASS)), 0.04,
+	CHECK(optics_refract(DIR_C(0, 0, -1), up, real_div(REAL_C(1.0), GLASS), &t));
+	CHECK(t.x == UNIT_C(0.0) && t.y == UNIT_C(0.0) && t.z == UNIT_C(-1.0));
+	CHECK_REAL(optics_fresnel(UNIT_C(1.0), real_div(REAL_C(1.0), GLASS)), 0.04,
 		   TOL3(1e-7, 1e-15, 1 * LSB));
 	/* Glass to air: the same 0.04 from the other side. */
-	CHECK(optics_refract(VEC_C(0, 0, -1), up, GLASS, &t));
-	CHECK(t.x == REAL_C(0.0) && t.y == REAL_C(0.0) && t.z == REAL_C(-1.0));
-	CHECK_REAL(optics_fresnel(REAL_C(1.0), GLASS), 0.04, TOL3(1e-7, 1e-15, 1 * LSB));
+	CHECK(optics_refract(DIR_C(0, 0, -1), up, GLASS, &t));
+	CHECK(t.x == UNIT_C(0.0) && t.y == UNIT_C(0.0) && t.z == UNIT_C(-1.0));
+	CHECK_REAL(optics_fresnel(UNIT_C(1.0), GLASS), 0.04, TOL3(1e-7, 1e-15, 1 * LSB));
 	/* R = 0 at no change of index, 1 - R = 1. */
-	CHECK_REAL(optics_fresnel(REAL_C(1.0), REAL_C(1.0)), 0.0, 0.0);
+	CHECK_REAL(optics_fresnel(UNIT_C(1.0), REAL_C(1.0)), 0.0, 0.0);
 }
 
 /* R02: eta = 1 (glass to glass) at 45 degrees: no bend, no reflection. */
 static void test_matched(void)
 {
-	vec3 d = incident(0.78539816339744831), t;
+	dir3 d = incident(0.78539816339744831), t;
 	CHECK(optics_refract(d, up, real_div(GLASS, GLASS), &t));
-	CHECK_REAL(t.x, test_double(d.x), TOL3(1e-7, 1e-15, 1 * LSB));
-	CHECK_REAL(t.y, 0.0, 0.0);
-	CHECK_REAL(t.z, test_double(d.z), TOL3(1e-7, 1e-15, 1 * LSB));
-	CHECK_REAL(optics_fresnel(-vec_dot(d, up), REAL_C(1.0)), 0.0, TOL3(1e-12, 1e-24, 1 * LSB));
+	CHECK_UNIT(t.x, test_unit_double(d.x), TOL3(1e-7, 1e-15, 1 * LSB));
+	CHECK_UNIT(t.y, 0.0, 0.0);
+	CHECK_UNIT(t.z, test_unit_double(d.z), TOL3(1e-7, 1e-15, 1 * LSB));
+	CHECK_REAL(optics_fresnel(-dir_dot(d, up), REAL_C(1.0)), 0.0, TOL3(1e-12, 1e-24, 1 * LSB));
 }
 
 /* R03, R03b, R03c: glass to air around the critical angle asin(1/1.5). */
 static void test_critical(void)
 {
 	const double critical = 0.72972765622696636; /* rad, = 41.8103148957786 degrees */
-	vec3 d, t;
-	real cos_i, r;
+	dir3 d, t;
+	unit cos_i;
+	real r;
 	int refracted;
 
 #if !REAL_FIXED
@@ -78,15 +79,15 @@ static void test_critical(void)
 	 * input cosine's rounding alone moves k = cos^2(theta_t) by ~7 %, so cos(theta_t)
 	 * is good to ~5e-5 and R (slope ~ -6 here) to ~3e-4. */
 	d = incident(critical - 1e-6);
-	cos_i = -vec_dot(d, up);
+	cos_i = -dir_dot(d, up);
 	CHECK(optics_refract(d, up, GLASS, &t));
-	CHECK_REAL(-t.z, 0.001495348697628181634, TOL(1e-4, 1e-12));
+	CHECK_UNIT(-t.z, 0.001495348697628181634, TOL(1e-4, 1e-12));
 	CHECK_NEAR(length_error(t), 0.0, TOL(2.4e-7, 4.4e-16));
 	CHECK_REAL(optics_fresnel(cos_i, GLASS), 0.99134958674137845404, TOL(5e-4, 1e-11));
 
 	/* 1e-6 rad above: total internal reflection, R = 1 exactly. */
 	d = incident(critical + 1e-6);
-	cos_i = -vec_dot(d, up);
+	cos_i = -dir_dot(d, up);
 	CHECK(!optics_refract(d, up, GLASS, &t));
 	CHECK_REAL(optics_fresnel(cos_i, GLASS), 1.0, 0.0);
 #else
@@ -97,13 +98,13 @@ static void test_critical(void)
 	 * input's rounding (1.1e-5 rad) moves cos(theta_t) by 24 per rad (18 LSB), and R by
 	 * 5 times that (measured: 7 and 24 LSB off). */
 	d = incident(critical - 1e-3);
-	cos_i = -vec_dot(d, up);
+	cos_i = -dir_dot(d, up);
 	CHECK(optics_refract(d, up, GLASS, &t));
-	CHECK_REAL(-t.z, 0.047284421185750346046, 21 * LSB);
+	CHECK_UNIT(-t.z, 0.047284421185750346046, 21 * LSB);
 	CHECK_NEAR(length_error(t), 0.0, 4 * LSB);
 	CHECK_REAL(optics_fresnel(cos_i, GLASS), 0.76364118783576464784, 101 * LSB);
 	d = incident(critical + 1e-3);
-	cos_i = -vec_dot(d, up);
+	cos_i = -dir_dot(d, up);
 	CHECK(!optics_refract(d, up, GLASS, &t));
 	CHECK_REAL(optics_fresnel(cos_i, GLASS), 1.0, 0.0);
 #endif
@@ -112,13 +113,13 @@ static void test_critical(void)
 	 * no branch is asserted, only that both functions take the same one, and that
 	 * what comes out is finite and in range. */
 	d = incident(critical);
-	cos_i = -vec_dot(d, up);
+	cos_i = -dir_dot(d, up);
 	refracted = optics_refract(d, up, GLASS, &t);
 	r = optics_fresnel(cos_i, GLASS);
 	CHECK(refracted ? r < REAL_C(1.0) : r == REAL_C(1.0));
 	CHECK(r >= REAL_C(0.0) && r <= REAL_C(1.0));
 	if (refracted)
-		CHECK(vec_is_finite(t) && real_fabs(t.z) < REAL_C(1e-3));
+		CHECK(vec_is_finite(dir_to_vec(t)) && unit_fabs(t.z) < UNIT_C(1e-3));
 }
 
 /* R04, R05, R07: exact Fresnel values, air to glass. */
@@ -126,21 +127,21 @@ static void test_fresnel_values(void)
 {
 	const double degree = 3.14159265358979323846 / 180.0;
 	real eta = real_div(REAL_C(1.0), GLASS);
-	vec3 d, t;
+	dir3 d, t;
 
 	/* R04: 89.9999 degrees, almost all reflected. */
-	CHECK_REAL(optics_fresnel(test_real(cos(89.9999 * degree)), eta), 0.99998985310448401086,
+	CHECK_REAL(optics_fresnel(test_unit(cos(89.9999 * degree)), eta), 0.99998985310448401086,
 		   TOL3(1e-6, 1e-13, 1 * LSB));
 	/* R05: at Brewster's angle atan(1.5) the parallel part vanishes and
 	 * R = r_perp^2 / 2 = 0.0739645 (Schlick's approximation gives 0.0568). */
 	d = incident(atan(1.5));
-	CHECK_REAL(optics_fresnel(-vec_dot(d, up), eta), 0.073964497041420118343,
+	CHECK_REAL(optics_fresnel(-dir_dot(d, up), eta), 0.073964497041420118343,
 		   TOL3(1e-6, 1e-14, 1 * LSB));
 	/* ... where the reflected and refracted rays are at right angles. */
 	CHECK(optics_refract(d, up, eta, &t));
-	CHECK_REAL(vec_dot(t, optics_reflect(d, up)), 0.0, TOL3(1e-6, 1e-15, 1 * LSB));
+	CHECK_UNIT(dir_dot(t, optics_reflect(d, up)), 0.0, TOL3(1e-6, 1e-15, 1 * LSB));
 	/* R07: at 85 degrees Schlick is off by 0.0357 (0.6485); the exact value is used. */
-	CHECK_REAL(optics_fresnel(test_real(cos(85.0 * degree)), eta), 0.61279964526482738210,
+	CHECK_REAL(optics_fresnel(test_unit(cos(85.0 * degree)), eta), 0.61279964526482738210,
 		   TOL3(1e-6, 1e-13, 1 * LSB));
 }
 
@@ -164,9 +165,9 @@ static void test_refract_sweep(void)
 	etas[5] = real_div(WATER, GLASS);
 	for (i = 0; i < 6; i++)
 		for (a = 0; a < 890; a++) {
-			vec3 d = incident(a * 0.1 * degree), t;
-			real cos_i = -vec_dot(d, up);
-			double sin_i = test_double(d.x), err;
+			dir3 d = incident(a * 0.1 * degree), t;
+			unit cos_i = -dir_dot(d, up);
+			double sin_i = test_unit_double(d.x), err;
 			if (!optics_refract(d, up, etas[i], &t)) {
 				tir_mismatch += optics_fresnel(cos_i, etas[i]) != REAL_C(1.0);
 				continue;
@@ -177,10 +178,10 @@ static void test_refract_sweep(void)
 			if (i == 0)
 				air_to_glass = worst_length;
 			/* sin(theta_t) = eta sin(theta_i), in the plane of incidence. */
-			err = fabs(test_double(t.x) - test_double(etas[i]) * sin_i) +
-			      fabs(test_double(t.y));
+			err = fabs(test_unit_double(t.x) - test_double(etas[i]) * sin_i) +
+			      fabs(test_unit_double(t.y));
 			worst_snell = err > worst_snell ? err : worst_snell;
-			wrong_side += !(t.z < REAL_C(0.0));
+			wrong_side += !(t.z < UNIT_C(0.0));
 		}
 	CHECK_NEAR(air_to_glass, 0.0, TOL3(1.1e-7, 4.4e-16, 2 * LSB));
 	CHECK_NEAR(worst_length, 0.0, TOL3(2.4e-7, 4.4e-16, 4 * LSB));
@@ -194,10 +195,10 @@ static void test_refract_sweep(void)
  * assumed air outside the water would give 0.0200593 at the inner exit. */
 static void test_nested(void)
 {
-	real r1 = optics_fresnel(REAL_C(1.0), real_div(REAL_C(1.0), GLASS)); /* air -> glass */
-	real r2 = optics_fresnel(REAL_C(1.0), real_div(GLASS, WATER));       /* glass -> water */
-	real r3 = optics_fresnel(REAL_C(1.0), real_div(WATER, GLASS));       /* water -> glass */
-	real r4 = optics_fresnel(REAL_C(1.0), GLASS);                        /* glass -> air */
+	real r1 = optics_fresnel(UNIT_C(1.0), real_div(REAL_C(1.0), GLASS)); /* air -> glass */
+	real r2 = optics_fresnel(UNIT_C(1.0), real_div(GLASS, WATER));       /* glass -> water */
+	real r3 = optics_fresnel(UNIT_C(1.0), real_div(WATER, GLASS));       /* water -> glass */
+	real r4 = optics_fresnel(UNIT_C(1.0), GLASS);                        /* glass -> air */
 	real pass;
 	CHECK_REAL(r1, 0.04, TOL3(1e-7, 1e-15, 1 * LSB));
 	CHECK_REAL(r2, 0.0036084855598147061394, TOL3(1e-8, 1e-16, 1 * LSB));
@@ -281,31 +282,31 @@ static void test_nan_inf(void)
 	 * be written there (its stand-in for N04 is below, and N02 is checked at load). */
 	/* N01: a NaN direction. `!(disc >= 0)` rejects it; `disc < 0` would pass NaN on. */
 	r.origin = VEC_C(0, 0, 0);
-	r.dir = vec_make(REAL_C(NAN), 0, 1);
+	r.dir = dir_make(REAL_C(NAN), 0, 1);
 	CHECK(!sphere_intersect(&o, &r, REAL_C(0.0), REAL_MAX, &h));
 	/* N03: an infinite origin, looking away from and towards the sphere. */
 	r.origin = vec_make(REAL_C(INFINITY), 0, 0);
-	r.dir = VEC_C(0, 0, 1);
+	r.dir = DIR_C(0, 0, 1);
 	CHECK(!sphere_intersect(&o, &r, REAL_C(0.0), REAL_MAX, &h));
-	r.dir = VEC_C(-1, 0, 0);
+	r.dir = DIR_C(-1, 0, 0);
 	CHECK(!sphere_intersect(&o, &r, REAL_C(0.0), REAL_MAX, &h));
 	/* N04: a zero direction normalised by division is NaN; it misses. */
 	r.origin = VEC_C(0, 0, 0);
-	r.dir = vec_make(REAL_C(NAN), REAL_C(NAN), REAL_C(NAN));
+	r.dir = dir_make(REAL_C(NAN), REAL_C(NAN), REAL_C(NAN));
 	CHECK(!sphere_intersect(&o, &r, REAL_C(0.0), REAL_MAX, &h));
 	r.origin = VEC_C(0, 0, 5); /* even from inside */
 	CHECK(!sphere_intersect(&o, &r, REAL_C(0.0), REAL_MAX, &h));
 	/* N05: a NaN centre. */
 	o.u.sphere.center = vec_make(0, 0, REAL_C(NAN));
 	r.origin = VEC_C(0, 0, 0);
-	r.dir = VEC_C(0, 0, 1);
+	r.dir = DIR_C(0, 0, 1);
 	CHECK(!sphere_intersect(&o, &r, REAL_C(0.0), REAL_MAX, &h));
 
 #else
 	/* N04 in Q16.16: a zero direction stays zero when normalised (no NaN to stop it);
 	 * from outside and from inside the sphere it must miss. */
 	r.origin = VEC_C(0, 0, 0);
-	r.dir = vec_normalize(VEC_C(0, 0, 0));
+	r.dir = dir_normalize(VEC_C(0, 0, 0));
 	CHECK(!sphere_intersect(&o, &r, REAL_C(0.0), REAL_MAX, &h));
 	r.origin = VEC_C(0, 0, 5);
 	CHECK(!sphere_intersect(&o, &r, REAL_C(0.0), REAL_MAX, &h));
@@ -330,7 +331,7 @@ static void test_nan_inf(void)
 /* Reflection keeps the tangential part and flips the normal part. */
 static void test_reflect(void)
 {
-	vec3 d = vec_normalize(VEC_C(1, 2, -3)), m = optics_reflect(d, up);
+	dir3 d = dir_normalize(VEC_C(1, 2, -3)), m = optics_reflect(d, up);
 	CHECK(m.x == d.x && m.y == d.y && m.z == -d.z);
 }
 

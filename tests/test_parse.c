@@ -304,7 +304,7 @@ static void test_polygon(void)
 	CHECK_INT(sc.objects[0].line, 8);
 	/* Opaque polygons are one-sided. */
 	CHECK_INT(sc.objects[0].flags, 0);
-	CHECK_VEC(sc.objects[0].u.polygon.normal, 0, 0, 1);
+	CHECK_VEC(dir_to_vec(sc.objects[0].u.polygon.normal), 0, 0, 1);
 	CHECK_REAL(sc.objects[0].u.polygon.offset, 2, EPS);
 	CHECK_INT(sc.objects[0].u.polygon.first, 0);
 	CHECK_INT(sc.objects[0].u.polygon.count, 3);
@@ -319,7 +319,7 @@ static void test_polygon(void)
 	CHECK_INT(sc.object_count, 2);
 	CHECK_INT(sc.objects[1].u.polygon.first, 3);
 	CHECK_INT(sc.objects[1].u.polygon.count, 4);
-	CHECK_VEC(sc.objects[1].u.polygon.normal, -1, 0, 0);
+	CHECK_VEC(dir_to_vec(sc.objects[1].u.polygon.normal), -1, 0, 0);
 	CHECK_REAL(sc.objects[1].u.polygon.offset, -3, EPS);
 	CHECK_INT(sc.objects[1].u.polygon.axis, 0);
 	CHECK_INT(sc.objects[1].flags, OBJ_TWO_SIDED);
@@ -329,14 +329,14 @@ static void test_polygon(void)
 
 	/* Clockwise seen from +z: the normal is -z. */
 	EXPECT_OK(VIEW "p 3\n0 0 -1\n0 1 -1\n1 0 -1\n");
-	CHECK_VEC(sc.objects[0].u.polygon.normal, 0, 0, -1);
+	CHECK_VEC(dir_to_vec(sc.objects[0].u.polygon.normal), 0, 0, -1);
 	CHECK_REAL(sc.objects[0].u.polygon.offset, 1, EPS);
 
 	/* Concave (a notched square, the reflex corner at (2, 1)): kept whole, in order. */
 	EXPECT_OK(VIEW "p 5\n0 0 0\n4 0 0\n4 4 0\n2 1 0\n0 4 0\n");
 	CHECK_INT(sc.object_count, 1);
 	CHECK_INT(sc.objects[0].u.polygon.count, 5);
-	CHECK_VEC(sc.objects[0].u.polygon.normal, 0, 0, 1);
+	CHECK_VEC(dir_to_vec(sc.objects[0].u.polygon.normal), 0, 0, 1);
 	CHECK_REAL(sc.objects[0].u.polygon.offset, 0, EPS);
 	for (i = 0; i < 5; i++) {
 		static const double xy[5][2] = {{0, 0}, {4, 0}, {4, 4}, {2, 1}, {0, 4}};
@@ -350,7 +350,7 @@ static void test_polygon(void)
 	CHECK_INT(sc.object_count, 1);
 	CHECK_INT(sc.objects[0].u.polygon.first, 0);
 	CHECK_INT(sc.vertex_count, 3);
-	CHECK_VEC(sc.objects[0].u.polygon.normal, 1, 0, 0);
+	CHECK_VEC(dir_to_vec(sc.objects[0].u.polygon.normal), 1, 0, 0);
 	EXPECT_WARNING(VIEW "p 4\n1 1 1\n1 1 1\n1 1 1\n1 1 1\n", 8, "polygon with zero area");
 	CHECK_INT(sc.object_count, 0);
 }
@@ -362,12 +362,12 @@ static void test_patch(void)
 	CHECK_INT(sc.object_count, 1);
 	CHECK_INT(sc.objects[0].kind, SHAPE_PATCH);
 	CHECK_INT(sc.objects[0].flags, OBJ_TWO_SIDED);
-	CHECK_VEC(sc.objects[0].u.polygon.normal, 0, 0, 1);
+	CHECK_VEC(dir_to_vec(sc.objects[0].u.polygon.normal), 0, 0, 1);
 	CHECK_INT(sc.objects[0].u.polygon.count, 3);
 	CHECK_VEC(sc.vertices[2], 0, 1, 0);
-	CHECK_VEC(sc.normals[0], 0, 0, 1);
-	CHECK_VEC(sc.normals[1], 0, 0, 1);
-	CHECK_VEC(sc.normals[2], 0.7071067811865475, 0, 0.7071067811865475);
+	CHECK_VEC(dir_to_vec(sc.normals[0]), 0, 0, 1);
+	CHECK_VEC(dir_to_vec(sc.normals[1]), 0, 0, 1);
+	CHECK_VEC(dir_to_vec(sc.normals[2]), 0.7071067811865475, 0, 0.7071067811865475);
 	EXPECT_WARNING(VIEW "pp 3\n0 0 0 0 0 1\n0 0 0 0 0 1\n0 0 0 0 0 1\n", 8,
 		       "patch with zero area; skipped");
 	EXPECT_ERROR(VIEW "pp 3\n0 0 0 0 0 1\n1 0 0\n", 10,
@@ -381,7 +381,7 @@ static void test_cone(void)
 	CHECK_INT(sc.objects[0].kind, SHAPE_CONE);
 	CHECK_INT(sc.objects[0].flags, OBJ_TWO_SIDED);
 	CHECK_VEC(sc.objects[0].u.cone.base, 0, 0, 0);
-	CHECK_VEC(sc.objects[0].u.cone.axis, 0, 0, 1);
+	CHECK_VEC(dir_to_vec(sc.objects[0].u.cone.axis), 0, 0, 1);
 	CHECK_REAL(sc.objects[0].u.cone.length, 4, EPS);
 	CHECK_REAL(sc.objects[0].u.cone.base_radius, 2, 0);
 	CHECK_REAL(sc.objects[0].u.cone.apex_radius, 1, 0);
@@ -389,7 +389,7 @@ static void test_cone(void)
 
 	/* A cylinder: equal radii, zero slope. */
 	EXPECT_OK(VIEW "c 1 1 1 0.5 1 3 1 0.5\n");
-	CHECK_VEC(sc.objects[0].u.cone.axis, 0, 1, 0);
+	CHECK_VEC(dir_to_vec(sc.objects[0].u.cone.axis), 0, 1, 0);
 	CHECK_REAL(sc.objects[0].u.cone.length, 2, EPS);
 	CHECK_REAL(sc.objects[0].u.cone.slope, 0, 0);
 
@@ -477,10 +477,10 @@ static void test_plane(void)
 	CHECK_INT(sc.object_count, 1);
 	CHECK_INT(sc.objects[0].kind, SHAPE_PLANE);
 	CHECK_INT(sc.objects[0].flags, OBJ_TWO_SIDED);
-	CHECK_VEC(sc.objects[0].u.plane.normal, 0, 1, 0);
+	CHECK_VEC(dir_to_vec(sc.objects[0].u.plane.normal), 0, 1, 0);
 	CHECK_REAL(sc.objects[0].u.plane.offset, -1, EPS);
 	EXPECT_OK(VIEW "plane 1 1 1 3 0 4\n");
-	CHECK_VEC(sc.objects[0].u.plane.normal, 0.6, 0, 0.8);
+	CHECK_VEC(dir_to_vec(sc.objects[0].u.plane.normal), 0.6, 0, 0.8);
 	CHECK_REAL(sc.objects[0].u.plane.offset, 1.4, EPS);
 	EXPECT_ERROR(VIEW "plane 0 0 0 0 0 0\n", 8, "plane: the normal is zero");
 }
@@ -500,7 +500,7 @@ static void test_box(void)
 	CHECK_INT(sc.plane_count, 6);
 	for (i = 0; i < 6; i++) {
 		/* Exact: unit axes and whole offsets survive normalisation unrounded. */
-		check_vec(sc.planes[i].normal, expect[i][0], expect[i][1], expect[i][2], 0,
+		check_vec(dir_to_vec(sc.planes[i].normal), expect[i][0], expect[i][1], expect[i][2], 0,
 			  __LINE__);
 		CHECK_REAL(sc.planes[i].offset, expect[i][3], 0);
 	}
@@ -518,11 +518,11 @@ static void test_polyhedron(void)
 	CHECK_INT(sc.objects[1].u.hedron.count, 3);
 	CHECK_INT(sc.plane_count, 9);
 	/* Normalised, with the offset divided by the same length. */
-	CHECK_VEC(sc.planes[6].normal, 0, 0, 1);
+	CHECK_VEC(dir_to_vec(sc.planes[6].normal), 0, 0, 1);
 	CHECK_REAL(sc.planes[6].offset, 2, EPS);
-	CHECK_VEC(sc.planes[7].normal, -1, 0, 0);
+	CHECK_VEC(dir_to_vec(sc.planes[7].normal), -1, 0, 0);
 	CHECK_REAL(sc.planes[7].offset, 1, EPS);
-	CHECK_VEC(sc.planes[8].normal, 0, 0.6, 0.8);
+	CHECK_VEC(dir_to_vec(sc.planes[8].normal), 0, 0.6, 0.8);
 	CHECK_REAL(sc.planes[8].offset, 2, EPS);
 	EXPECT_ERROR(VIEW "polyhedron 2\n1 0 0 1\n0 0 0 1\n", 10,
 		     "polyhedron: a plane normal is zero");

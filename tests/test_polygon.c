@@ -39,7 +39,7 @@ static object polygon_object(int first, int count, vec3 normal, real offset, int
 	o.flags = (unsigned char)flags;
 	o.material = 0;
 	o.line = 0;
-	o.u.polygon.normal = normal;
+	o.u.polygon.normal = dir_normalize(normal);
 	o.u.polygon.offset = offset;
 	o.u.polygon.first = first;
 	o.u.polygon.count = count;
@@ -106,9 +106,9 @@ static void test_square(void)
 	CHECK_REAL(h.point.x, 0.5, 0.0);
 	CHECK_REAL(h.point.y, 0.5, 0.0);
 	CHECK_REAL(h.point.z, 0.0, 0.0);
-	CHECK(h.normal.x == REAL_C(0.0) && h.normal.y == REAL_C(0.0) && h.normal.z == REAL_C(1.0));
-	CHECK(h.shading.x == REAL_C(0.0) && h.shading.y == REAL_C(0.0) &&
-	      h.shading.z == REAL_C(1.0));
+	CHECK(h.normal.x == UNIT_C(0.0) && h.normal.y == UNIT_C(0.0) && h.normal.z == UNIT_C(1.0));
+	CHECK(h.shading.x == UNIT_C(0.0) && h.shading.y == UNIT_C(0.0) &&
+	      h.shading.z == UNIT_C(1.0));
 	CHECK(polygon_intersect(&s, &square, &r, 0, REAL_MAX, NULL));
 	CHECK(!polygon_intersect(&s, &square, &r, 0, REAL_C(0.5), &h));
 	CHECK(!polygon_intersect(&s, &square, &r, REAL_C(1.5), REAL_MAX, &h));
@@ -252,7 +252,7 @@ static void test_collinear(void)
 	/* Only the second, proper triangle is left, with a unit normal. */
 	CHECK_INT(s.object_count, 1);
 	CHECK_INT(zero_area_warnings, 1);
-	CHECK_REAL(s.objects[0].u.polygon.normal.z, 1.0, 0.0);
+	CHECK_UNIT(s.objects[0].u.polygon.normal.z, 1.0, 0.0);
 }
 
 /* ---- G11: random points on shared edges of a grid --------------------------------- */
@@ -532,7 +532,7 @@ static void test_other_axes(void)
 	r = test_ray(VEC_C(0.5, -7, 0.5), VEC_C(0, 1, 0));
 	CHECK(polygon_intersect(&s, &o, &r, 0, REAL_MAX, &h));
 	CHECK_REAL(h.t, 4.0, 0.0);
-	CHECK(h.normal.x == REAL_C(0.0) && h.normal.y == REAL_C(-1.0) && h.normal.z == REAL_C(0.0));
+	CHECK(h.normal.x == UNIT_C(0.0) && h.normal.y == UNIT_C(-1.0) && h.normal.z == UNIT_C(0.0));
 	/* From behind, one-sided: nothing. */
 	r = test_ray(VEC_C(0.5, 1, 0.5), VEC_C(0, -1, 0));
 	CHECK(!polygon_intersect(&s, &o, &r, 0, REAL_MAX, &h));
@@ -551,10 +551,10 @@ static void check_patch_normal(const object *o, real x, real y, const double exp
 	hit h;
 	if (!CHECK(polygon_intersect(&s, o, &r, 0, REAL_MAX, &h)))
 		return;
-	CHECK(h.normal.x == REAL_C(0.0) && h.normal.y == REAL_C(0.0) && h.normal.z == REAL_C(1.0));
-	CHECK_REAL(h.shading.x, expect[0] / len, NORMAL_TOL);
-	CHECK_REAL(h.shading.y, expect[1] / len, NORMAL_TOL);
-	CHECK_REAL(h.shading.z, expect[2] / len, NORMAL_TOL);
+	CHECK(h.normal.x == UNIT_C(0.0) && h.normal.y == UNIT_C(0.0) && h.normal.z == UNIT_C(1.0));
+	CHECK_UNIT(h.shading.x, expect[0] / len, NORMAL_TOL);
+	CHECK_UNIT(h.shading.y, expect[1] / len, NORMAL_TOL);
+	CHECK_UNIT(h.shading.z, expect[2] / len, NORMAL_TOL);
 }
 
 static void test_patch(void)
@@ -570,9 +570,9 @@ static void test_patch(void)
 	tri = xy_polygon(unit_square, 3, OBJ_TWO_SIDED);
 	tri.kind = SHAPE_PATCH;
 	first = tri.u.polygon.first;
-	s.normals[first] = VEC_C(0, 0, 1);
-	s.normals[first + 1] = vec_make(test_real(r2), REAL_C(0), test_real(r2));
-	s.normals[first + 2] = vec_make(test_real(r3), test_real(r3), test_real(r3));
+	s.normals[first] = DIR_C(0, 0, 1);
+	s.normals[first + 1] = dir_make(test_unit(r2), UNIT_C(0), test_unit(r2));
+	s.normals[first + 2] = dir_make(test_unit(r3), test_unit(r3), test_unit(r3));
 	/* (0.75, 0.25): weights 0.25, 0.5, 0.25. */
 	e[0] = 0.5 * r2 + 0.25 * r3;
 	e[1] = 0.25 * r3;
@@ -601,10 +601,10 @@ static void test_patch(void)
 	quad = xy_polygon(unit_square, 4, OBJ_TWO_SIDED);
 	quad.kind = SHAPE_PATCH;
 	first = quad.u.polygon.first;
-	s.normals[first] = VEC_C(0, 0, 1);
-	s.normals[first + 1] = vec_make(test_real(r2), REAL_C(0), test_real(r2));
-	s.normals[first + 2] = vec_make(test_real(r3), test_real(r3), test_real(r3));
-	s.normals[first + 3] = vec_make(REAL_C(0), test_real(r2), test_real(r2));
+	s.normals[first] = DIR_C(0, 0, 1);
+	s.normals[first + 1] = dir_make(test_unit(r2), UNIT_C(0), test_unit(r2));
+	s.normals[first + 2] = dir_make(test_unit(r3), test_unit(r3), test_unit(r3));
+	s.normals[first + 3] = dir_make(UNIT_C(0), test_unit(r2), test_unit(r2));
 	/* (0.25, 0.75) is in the second fan triangle, 0.25 v0 + 0.25 v2 + 0.5 v3. */
 	e[0] = 0.25 * r3;
 	e[1] = 0.25 * r3 + 0.5 * r2;

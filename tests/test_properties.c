@@ -94,18 +94,26 @@ static vec3 to_vec(const double v[3])
 #endif
 }
 
-static void from_vec(vec3 v, double out[3])
+/* A unit vector (|v| at most 1), rounded once per component. */
+static dir3 to_dir(const double v[3])
 {
-	out[0] = test_double(v.x);
-	out[1] = test_double(v.y);
-	out[2] = test_double(v.z);
+	return dir_make(test_unit(v[0]), test_unit(v[1]), test_unit(v[2]));
+}
+
+static void from_dir(dir3 v, double out[3])
+{
+	out[0] = test_unit_double(v.x);
+	out[1] = test_unit_double(v.y);
+	out[2] = test_unit_double(v.z);
 }
 
 /* A real as long double, for references that add no rounding of their own. */
 #if REAL_FIXED
 #define LD(x) ((long double)test_double(x))
+#define LDU(x) ((long double)test_unit_double(x))
 #else
 #define LD(x) ((long double)(x))
+#define LDU(x) ((long double)(x))
 #endif
 
 /* A ray leaving the hit h on the side `side` (its faced normal, or the opposite), with
@@ -113,8 +121,8 @@ static void from_vec(vec3 v, double out[3])
 static ray spawn(const hit *h, int outward, const double dir[3])
 {
 	ray r;
-	r.origin = trace_offset(h->point, outward ? h->normal : vec_neg(h->normal), h->t);
-	r.dir = vec_normalize(to_vec(dir));
+	r.origin = trace_offset(h->point, outward ? h->normal : dir_neg(h->normal), h->t);
+	r.dir = dir_normalize(to_vec(dir));
 	return r;
 }
 
@@ -136,10 +144,10 @@ static void one_object_scene(void)
 
 /* Where the ray o + t d meets the sphere again, in long double: returns the number of
  * roots t > 0 (0, 1 or 2) and the smallest in *t. */
-static int sphere_roots(vec3 o, vec3 d, vec3 c, real radius, long double *t)
+static int sphere_roots(vec3 o, dir3 d, vec3 c, real radius, long double *t)
 {
 	long double fx = LD(o.x) - LD(c.x), fy = LD(o.y) - LD(c.y), fz = LD(o.z) - LD(c.z);
-	long double dx = LD(d.x), dy = LD(d.y), dz = LD(d.z);
+	long double dx = LDU(d.x), dy = LDU(d.y), dz = LDU(d.z);
 	long double a = dx * dx + dy * dy + dz * dz;
 	long double b = fx * dx + fy * dy + fz * dz;
 	long double cc = fx * fx + fy * fy + fz * fz - LD(radius) * LD(radius);
@@ -233,7 +241,7 @@ static void self_hit_sphere(const sphere_setup *setup)
 			no_primary++;
 			continue;
 		}
-		from_vec(h.normal, normal);
+		from_dir(h.normal, normal);
 		for (k = 0; k < 2; k++) {
 			int outward = k == 0, expect_inside;
 			double dir[3], side[3];
@@ -323,7 +331,7 @@ static int add_cube(const frame *f)
 			double local[3] = {0, 0, 0}, n[3];
 			local[axis] = side ? -1.0 : 1.0;
 			to_world(f, local, n, 0);
-			s.planes[s.plane_count].normal = to_vec(n);
+			s.planes[s.plane_count].normal = to_dir(n);
 			s.planes[s.plane_count].offset = length(dot3(n, f->move) + 1.0);
 			s.plane_count++;
 		}
@@ -342,8 +350,8 @@ static long double cube_excess(int first, vec3 p)
 	int i;
 	for (i = 0; i < 6; i++) {
 		const halfspace *pl = &s.planes[first + i];
-		long double e = LD(pl->normal.x) * LD(p.x) + LD(pl->normal.y) * LD(p.y) +
-				LD(pl->normal.z) * LD(p.z) - LD(pl->offset);
+		long double e = LDU(pl->normal.x) * LD(p.x) + LDU(pl->normal.y) * LD(p.y) +
+				LDU(pl->normal.z) * LD(p.z) - LD(pl->offset);
 		worst = e > worst ? e : worst;
 	}
 	return worst;
@@ -391,7 +399,7 @@ static void self_hit_hedron(const char *name, const frame *f)
 			long double scale;
 			ray next;
 			hit h2;
-			from_vec(h.normal, normal);
+			from_dir(h.normal, normal);
 			if (outward) {
 				rnd_around(normal, 0.0, 1.0, dir);
 			} else {
@@ -420,7 +428,7 @@ static void self_hit_hedron(const char *name, const frame *f)
 			/* Q16.16 (at the test's scale): the point is o + t d with t good to
 			 * 2^-16 of t, on a face whose rounded normal (half an LSB per
 			 * component) moves it by up to 1.5 LSB of its size. */
-			if (!(vec_dot(h2.normal, h.normal) > REAL_C(-0.99) && h2.t > length(0.01) &&
+			if (!(dir_dot(h2.normal, h.normal) > UNIT_C(-0.99) && h2.t > length(0.01) &&
 			      fabsl(cube_excess(0, h2.point)) <
 				      (long double)TOL3(5e-7, 1e-14, 1.5 * LSB) * scale +
 					      (long double)TOL3(0, 0,
@@ -458,7 +466,7 @@ static int add_square(const double origin[3], const double e1[3], const double e
 	memset(o, 0, sizeof *o);
 	o->kind = SHAPE_POLYGON;
 	o->flags = (unsigned char)flags;
-	o->u.polygon.normal = to_vec(n);
+	o->u.polygon.normal = to_dir(n);
 	o->u.polygon.offset = length(dot3(n, origin));
 	o->u.polygon.axis = fabs(n[0]) > fabs(n[1]) ? (fabs(n[0]) > fabs(n[2]) ? 0 : 2)
 						    : (fabs(n[1]) > fabs(n[2]) ? 1 : 2);
@@ -495,7 +503,7 @@ static void self_hit_polygon(const char *name, const double origin[3], unsigned 
 		double a = rnd_range(0.1, 3.9), b = rnd_range(0.1, 3.9);
 		ray r;
 		hit h;
-		from_vec(s.objects[0].u.polygon.normal, normal);
+		from_dir(s.objects[0].u.polygon.normal, normal);
 		rnd_around(normal, 0.05, 1.0, w);
 		for (i = 0; i < 3; i++) {
 			p[i] = origin[i] + a * e1[i] + b * e2[i];
@@ -515,13 +523,13 @@ static void self_hit_polygon(const char *name, const double origin[3], unsigned 
 			hit h2;
 			if (!outward && !(flags & OBJ_TWO_SIDED))
 				break;
-			from_vec(outward ? h.normal : vec_neg(h.normal), side);
+			from_dir(outward ? h.normal : dir_neg(h.normal), side);
 			rnd_around(side, 0.0, 1.0, dir);
 			next = spawn(&h, outward, dir);
 			/* The new origin lies strictly on the side it was sent to. */
-			excess = LD(s.objects[0].u.polygon.normal.x) * LD(next.origin.x) +
-				 LD(s.objects[0].u.polygon.normal.y) * LD(next.origin.y) +
-				 LD(s.objects[0].u.polygon.normal.z) * LD(next.origin.z) -
+			excess = LDU(s.objects[0].u.polygon.normal.x) * LD(next.origin.x) +
+				 LDU(s.objects[0].u.polygon.normal.y) * LD(next.origin.y) +
+				 LDU(s.objects[0].u.polygon.normal.z) * LD(next.origin.z) -
 				 LD(s.objects[0].u.polygon.offset);
 			if (!((excess > 0) == outward)) {
 				wrong_side++;
@@ -572,7 +580,7 @@ static void add_triangle(const double *a, const double *b, const double *c)
 	uv[2] = c;
 	memset(o, 0, sizeof *o);
 	o->kind = SHAPE_POLYGON;
-	o->u.polygon.normal = to_vec(grid_n);
+	o->u.polygon.normal = to_dir(grid_n);
 	o->u.polygon.offset = length(dot3(grid_n, grid_origin));
 	o->u.polygon.axis = 0;
 	o->u.polygon.first = s.vertex_count;
@@ -727,16 +735,17 @@ static void energy(void)
 		for (side = 0; side < 2; side++) {
 			real eta = test_real(side ? ratios[i] : 1.0 / ratios[i]);
 			for (a = 0; a <= 1000; a++) {
-				real cos_i = test_real(a / 1000.0), r = optics_fresnel(cos_i, eta);
-				double sin_i = sqrt(1.0 - test_double(cos_i) * test_double(cos_i));
-				vec3 d = vec_make(test_real(sin_i), REAL_C(0.0), -cos_i), t;
+				unit cos_i = test_unit(a / 1000.0);
+				real r = optics_fresnel(cos_i, eta);
+				double sin_i = sqrt(1.0 - test_unit_double(cos_i) * test_unit_double(cos_i));
+				dir3 d = dir_make(test_unit(sin_i), UNIT_C(0.0), -cos_i), t;
 				if (!(r >= REAL_C(0.0) && r <= REAL_C(1.0) &&
 				      REAL_C(1.0) - r >= REAL_C(0.0)))
 					out_of_range++;
 				/* Reciprocity: from the transmitted side, at theta_t, the same R.
 				 * Away from grazing, where R's slope is finite. */
-				if (a >= 50 && optics_refract(d, VEC_C(0, 0, 1), eta, &t) &&
-				    -t.z >= REAL_C(0.05)) {
+				if (a >= 50 && optics_refract(d, DIR_C(0, 0, 1), eta, &t) &&
+				    -t.z >= UNIT_C(0.05)) {
 					real back = optics_fresnel(-t.z,
 								   real_div(REAL_C(1.0), eta));
 					/* Q16.16: R from either side comes from rounded cosines
@@ -750,7 +759,7 @@ static void energy(void)
 		}
 	/* Out-of-range cosines are clamped: no NaN, still in [0, 1]. */
 	for (a = 0; a < 4; a++) {
-		real r = optics_fresnel(a < 2 ? REAL_C(-0.5) : REAL_C(1.5),
+		real r = optics_fresnel(a < 2 ? UNIT_C(-0.5) : UNIT_C(1.5),
 					 a % 2 ? REAL_C(1.5) : real_div(REAL_C(1.0), REAL_C(1.5)));
 		out_of_range += !(r >= REAL_C(0.0) && r <= REAL_C(1.0));
 	}

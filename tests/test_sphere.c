@@ -181,11 +181,11 @@ static void run_case(const sphere_case *k)
 	snprintf(what, sizeof what, "%s t", k->id);
 	test_check_near(test_double(h.t), (double)k->t * scale, k->tol, __FILE__, __LINE__, what);
 	snprintf(what, sizeof what, "%s normal.x", k->id);
-	test_check_near(test_double(h.normal.x), (double)k->n[0], k->ntol, __FILE__, __LINE__, what);
+	test_check_near(test_unit_double(h.normal.x), (double)k->n[0], k->ntol, __FILE__, __LINE__, what);
 	snprintf(what, sizeof what, "%s normal.y", k->id);
-	test_check_near(test_double(h.normal.y), (double)k->n[1], k->ntol, __FILE__, __LINE__, what);
+	test_check_near(test_unit_double(h.normal.y), (double)k->n[1], k->ntol, __FILE__, __LINE__, what);
 	snprintf(what, sizeof what, "%s normal.z", k->id);
-	test_check_near(test_double(h.normal.z), (double)k->n[2], k->ntol, __FILE__, __LINE__, what);
+	test_check_near(test_unit_double(h.normal.z), (double)k->n[2], k->ntol, __FILE__, __LINE__, what);
 	/* The shadow-ray form (no hit record) must give the same answer. */
 	snprintf(what, sizeof what, "%s: same answer without a hit record", k->id);
 	test_check(sphere_intersect(&o, &r, tmin, REAL_MAX, NULL) == got, __FILE__, __LINE__,
@@ -264,14 +264,14 @@ static void test_sphere_contract(void)
 	/* Past the near root, the far root at 6 is next. */
 	CHECK(sphere_intersect(&o, &r, REAL_C(4.5), REAL_MAX, &h));
 	CHECK_REAL(h.t, 6.0, 0.0);
-	CHECK_REAL(h.normal.z, 1.0, 0.0);
+	CHECK_UNIT(h.normal.z, 1.0, 0.0);
 
 	/* NFF's negative radius: only the inside shows, so from outside the far wall. */
 	o.flags = OBJ_TWO_SIDED | OBJ_INSIDE_ONLY;
 	CHECK(sphere_intersect(&o, &r, REAL_C(0.0), REAL_MAX, &h));
 	CHECK_REAL(h.t, 6.0, 0.0);
 	CHECK_REAL(h.point.z, 6.0, 0.0);
-	CHECK_REAL(h.normal.z, 1.0, 0.0);
+	CHECK_UNIT(h.normal.z, 1.0, 0.0);
 	/* From inside it is the same exit as for an ordinary sphere (S03). */
 	r.origin = vec_make(REAL_C(0.0), REAL_C(0.0), REAL_C(5.0));
 	CHECK(sphere_intersect(&o, &r, REAL_C(0.0), REAL_MAX, &h));
