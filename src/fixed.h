@@ -258,6 +258,37 @@ FIXED_PARTS int64_t fixed_dot3_wide_narrow(int32_t ax, int32_t ay, int32_t az, i
 	return fixed_join_parts(low, high);
 }
 
+/* fixed_saturate(((high << 32) + low + 2^29) >> 30): a product or dot product of Q2.30
+ * numbers (Q4.60, or Q18.46 for a Q16.16 factor) rounded at bit 30, in 32-bit steps as
+ * fixed_round_parts: no 64-bit shift and no call. */
+FIXED_PARTS int32_t fixed_round30_parts(uint32_t low, int32_t high)
+{
+	int32_t v;
+	fixed_add_parts(&low, &high, 0x20000000u, 0);
+	/* In range when high is in [-2^29, 2^29), but for -2^31 itself. */
+	v = (int32_t)(((uint32_t)high << 2) | (low >> 30));
+	if (((uint32_t)high + 0x20000000u) >> 30 || v == INT32_MIN)
+		return high < 0 ? -INT32_MAX : INT32_MAX;
+	return v;
+}
+
+FIXED_PARTS int32_t fixed_mul30_narrow(int32_t a, int32_t b)
+{
+	uint32_t low;
+	int32_t high;
+	fixed_wide_mul_parts(a, b, &low, &high);
+	return fixed_round30_parts(low, high);
+}
+
+FIXED_PARTS int32_t fixed_dot3_30_narrow(int32_t ax, int32_t ay, int32_t az, int32_t bx,
+					   int32_t by, int32_t bz)
+{
+	uint32_t low;
+	int32_t high;
+	fixed_dot3_parts(ax, ay, az, bx, by, bz, &low, &high);
+	return fixed_round30_parts(low, high);
+}
+
 /* Number of significant bits of x (0 for 0), by halving: a few steps, no loop. */
 static inline int fixed_bit_length(uint64_t x)
 {
@@ -401,7 +432,6 @@ FIXED_KERNEL int32_t fixed_times_reciprocal(int32_t x, fixed_reciprocal r); /* x
 /* Q2.30 (unit-length quantities): a b / 2^30 and a dot product / 2^30, rounded and
  * saturated, keep the format of the factor that is not Q2.30 (Q2.30 when both are);
  * a / b for a Q16.16 over a Q2.30; x / d in Q2.30 from d's reciprocal. */
-FIXED_KERNEL int32_t fixed_round30(int64_t v); /* v / 2^30, rounded and saturated */
 FIXED_KERNEL int32_t fixed_mul30(int32_t a, int32_t b);
 FIXED_KERNEL int32_t fixed_dot3_30(int32_t ax, int32_t ay, int32_t az, int32_t bx, int32_t by,
 				   int32_t bz);
@@ -581,22 +611,26 @@ FIXED_KERNEL int32_t fixed_times_reciprocal(int32_t x, fixed_reciprocal r)
 	return (x < 0) != r.negative ? -(int32_t)q : (int32_t)q;
 }
 
-/* Through the 64-bit product and dot product above, rounded at bit 29 and saturated in
- * one place: not another multiply kernel. */
-FIXED_KERNEL int32_t fixed_round30(int64_t v)
-{
-	return fixed_saturate((v + ((int64_t)1 << 29)) >> 30);
-}
-
+/* Rounded at bit 29 and saturated: on the M0 in 32-bit halves, inlined (as fixed_mul). */
 FIXED_KERNEL int32_t fixed_mul30(int32_t a, int32_t b)
 {
-	return fixed_round30(fixed_wide_mul(a, b));
+#if FIXED_NARROW
+	return fixed_mul30_narrow(a, b);
+#else
+	return fixed_saturate(((int64_t)a * b + ((int64_t)1 << 29)) >> 30);
+#endif
 }
 
 FIXED_KERNEL int32_t fixed_dot3_30(int32_t ax, int32_t ay, int32_t az, int32_t bx, int32_t by,
 				   int32_t bz)
 {
-	return fixed_round30(fixed_dot3_wide(ax, ay, az, bx, by, bz));
+#if FIXED_NARROW
+	return fixed_dot3_30_narrow(ax, ay, az, bx, by, bz);
+#else
+	return fixed_saturate(((int64_t)ax * bx + (int64_t)ay * by + (int64_t)az * bz +
+			       ((int64_t)1 << 29)) >>
+			      30);
+#endif
 }
 
 FIXED_KERNEL int32_t fixed_div30(int32_t a, int32_t b)

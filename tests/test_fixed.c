@@ -232,6 +232,18 @@ static void test_narrow_kernels(void)
 				    (int64_t)(a >> 1) * b - (int64_t)(b >> 1) * (a >> 1) +
 					    (int64_t)b * (a >> 5))
 				mismatches++;
+			/* The Q2.30 forms, rounded at bit 30 (the dot product halved as above). */
+			if (fixed_mul30_narrow(a, b) !=
+				    fixed_saturate(((int64_t)a * b + ((int64_t)1 << 29)) >> 30) ||
+			    fixed_mul30(a, b) != fixed_mul30_narrow(a, b) ||
+			    fixed_dot3_30_narrow(a >> 1, b, (a ^ b) >> 1, b >> 1, a, b >> 3) !=
+				    fixed_saturate(((int64_t)(a >> 1) * (b >> 1) + (int64_t)b * a +
+						    (int64_t)((a ^ b) >> 1) * (b >> 3) +
+						    ((int64_t)1 << 29)) >>
+						   30) ||
+			    fixed_dot3_30(a >> 1, b, (a ^ b) >> 1, b >> 1, a, b >> 3) !=
+				    fixed_dot3_30_narrow(a >> 1, b, (a ^ b) >> 1, b >> 1, a, b >> 3))
+				mismatches++;
 			/* One reciprocal for many divisions: within an LSB of dividing (two past 2^30). */
 			if (b != 0 && fixed_div(a, b) != FIXED_MAX && fixed_div(a, b) != -FIXED_MAX &&
 			    fixed_abs(fixed_times_reciprocal(a, fixed_reciprocal_of(b)) - fixed_div(a, b)) >
@@ -264,6 +276,11 @@ static void test_narrow_kernels(void)
 	CHECK_INT(fixed_dot3_narrow(INT32_MIN, 0, 0, 65536, 0, 0), -INT32_MAX);
 	CHECK_INT(fixed_dot3_narrow(INT32_MIN + 1, 0, 0, 65536, 0, 0), -INT32_MAX);
 	CHECK_INT(fixed_dot3_narrow(INT32_MAX, 0, 0, 65536, 0, 0), INT32_MAX);
+	CHECK_INT(fixed_mul30_narrow(INT32_MIN, INT32_MIN), INT32_MAX);
+	CHECK_INT(fixed_mul30_narrow(INT32_MIN, 1 << 30), -INT32_MAX);
+	CHECK_INT(fixed_mul30_narrow(-1, 1 << 29), 0); /* -0.5 LSB rounds towards +infinity */
+	CHECK_INT(fixed_mul30_narrow(-1, (1 << 29) + 1), -1);
+	CHECK_INT(fixed_dot3_30_narrow(INT32_MAX, INT32_MAX, 0, 1 << 30, 1 << 30, 0), INT32_MAX);
 	CHECK_INT(fixed_mul_narrow(-65536, 65535), -65535);
 	CHECK_INT(fixed_mul_narrow(-1, 32768), 0);  /* -0.5 LSB rounds towards +infinity */
 	CHECK_INT(fixed_mul_narrow(-1, 32769), -1);
