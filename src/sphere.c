@@ -53,9 +53,11 @@ int sphere_intersect_from(const object *o, const ray *r, const origin_term *k, r
 			  real tmax, hit *h)
 {
 	const sphere_shape *s = &o->u.sphere;
-	vec3 f = k->f;
+	/* f through the pointer, not copied: a copy of k's 8-byte aligned terms is a
+	 * memcpy call on the M0. */
+	const vec3 *f = &k->f;
 	real2 c = k->u.c;
-	real b = dir_dot_vec(r->dir, f), t0, t1, t;
+	real b = dir_dot_vec(r->dir, *f), t0, t1, t;
 	/* Outside the sphere and moving away from its centre: both roots lie behind the
 	 * origin (their product c/a > 0, their sum -2b/a < 0). Most rays miss most spheres,
 	 * and this costs nothing. */
@@ -89,7 +91,7 @@ int sphere_intersect_from(const object *o, const ray *r, const origin_term *k, r
 	a = unit_to_real(dir_dot(r->dir, r->dir));
 	/* a = 1 exactly (often, in every type) divides by nothing and scales by nothing:
 	 * the same numbers without the division and the product. */
-	v = dir_madd(f, a == REAL_C(1.0) ? -b : -real_div(b, a), r->dir);
+	v = dir_madd(*f, a == REAL_C(1.0) ? -b : -real_div(b, a), r->dir);
 	real2 perpendicular = s->radius2 - vec_dot2(v, v);
 	real2 discriminant = perpendicular;
 	if (a != REAL_C(1.0))
