@@ -129,10 +129,12 @@ typedef fixed_reciprocal real_reciprocal;
  * b^2 off by |b| in Q32.32) and w a real2 scaled by a near-one factor (real2_scale
  * truncates: off by |w| / 2^16), with room to spare: errors here are absolute. */
 #define real2_error_bound(b, w) \
-	((real2)fixed_abs(b) + ((w) < 0 ? -(w) : (w)) / 65536 + (real2)131072)
+	((real2)fixed_abs(b) + (real2)(((w) < 0 ? 0u - (uint64_t)(w) : (uint64_t)(w)) >> 16) + \
+	 (real2)131072)
 /* How far w > 0 moves when scaled by the squared length of a unit direction (within
- * 2^-10 of 1, far more than rounding leaves it off): 2^-10 of w, a shift. */
-#define real2_unit_slack(w) ((w) / 1024)
+ * 2^-10 of 1, far more than rounding leaves it off): 2^-10 of w, a shift (w / 1024 for
+ * w > 0, without a signed division's correction). */
+#define real2_unit_slack(w) ((w) >> 10)
 /* Unit-length quantities (direction and normal components, cosines) are Q2.30, 1.0 =
  * 2^30: a normalised direction is good to a few 2^-30, where Q16.16 kept 2^-17, and
  * a dot product with it no longer rounds to Q16.16's step. A product with a unit keeps
