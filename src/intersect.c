@@ -62,12 +62,20 @@ void origin_terms_init(const scene *s, vec3 origin, origin_terms *k)
 		origin_term_init(&s->objects[i], origin, &k->terms[i]);
 }
 
-int scene_intersect(const scene *s, const ray *r, real tmax, hit *h)
+int object_can_rehit(const scene *s, int index, int front)
 {
-	return scene_intersect_from(s, r, NULL, tmax, h);
+	int kind = s->objects[index].kind;
+	(void)front;
+	return !(kind == SHAPE_PLANE || kind == SHAPE_POLYGON || kind == SHAPE_PATCH);
 }
 
-int scene_intersect_from(const scene *s, const ray *r, const origin_terms *k, real tmax, hit *h)
+int scene_intersect(const scene *s, const ray *r, real tmax, hit *h)
+{
+	return scene_intersect_from(s, r, NULL, -1, tmax, h);
+}
+
+int scene_intersect_from(const scene *s, const ray *r, const origin_terms *k, int skip,
+			 real tmax, hit *h)
 {
 	int i, found = 0;
 #if RT_USE_BVH
@@ -78,7 +86,7 @@ int scene_intersect_from(const scene *s, const ray *r, const origin_terms *k, re
 	{
 		for (i = 0; i < s->object_count; i++) {
 			/* Each hit shrinks tmax, so later objects only report nearer hits. */
-			if (object_intersect_from(s, i, r, k ? &k->terms[i] : NULL, REAL_C(0.0),
+			if (i != skip && object_intersect_from(s, i, r, k ? &k->terms[i] : NULL, REAL_C(0.0),
 						  tmax, h)) {
 				tmax = h->t;
 				h->object = i;
@@ -91,7 +99,7 @@ int scene_intersect_from(const scene *s, const ray *r, const origin_terms *k, re
 	return found;
 }
 
-real scene_transmittance(const scene *s, const ray *r, real tmax, int *blocker)
+real scene_transmittance(const scene *s, const ray *r, real tmax, int skip, int *blocker)
 {
 	real pass = REAL_C(1.0);
 	int i, unused;
@@ -103,7 +111,7 @@ real scene_transmittance(const scene *s, const ray *r, real tmax, int *blocker)
 		return bvh_transmittance(s, r, tmax, blocker);
 #endif
 	for (i = 0; i < s->object_count; i++) {
-		if (object_intersect(s, i, r, REAL_C(0.0), tmax, NULL)) {
+		if (i != skip && object_intersect(s, i, r, REAL_C(0.0), tmax, NULL)) {
 			real kt = s->materials[s->objects[i].material].kt;
 			/* Stop at the first opaque blocker: nothing else can change the answer. */
 			if (kt <= REAL_C(0.0)) {

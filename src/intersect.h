@@ -24,12 +24,21 @@ typedef struct {
 
 void origin_terms_init(const scene *s, vec3 origin, origin_terms *k);
 
-/* scene_intersect, for a ray from k's origin: the same hit, with fewer products. */
-int scene_intersect_from(const scene *s, const ray *r, const origin_terms *k, real tmax, hit *h);
+/* Can a ray that leaves object `index` on the side a hit came from (front: the outside)
+ * meet it again? Not a flat one (plane, polygon, patch): a line crosses its plane once,
+ * there, and the surface offset already keeps the search from finding that crossing.
+ * Such a ray's searches below may leave the object out (`skip`). */
+int object_can_rehit(const scene *s, int index, int front);
+
+/* scene_intersect, for a ray from k's origin (k may be NULL) that cannot meet object
+ * `skip` (-1 for none): the same hit, with fewer products. */
+int scene_intersect_from(const scene *s, const ray *r, const origin_terms *k, int skip,
+			 real tmax, hit *h);
 
 /* Fraction of light that passes along r over (0, tmax): 0 at the first opaque blocker,
- * else the product of the kt of the transmitting objects crossed. *blocker (if not NULL)
- * gets the opaque blocker's index, or -1. */
-real scene_transmittance(const scene *s, const ray *r, real tmax, int *blocker);
+ * else the product of the kt of the transmitting objects crossed, leaving out object
+ * `skip` (as scene_intersect_from). *blocker (if not NULL) gets the opaque blocker's
+ * index, or -1. */
+real scene_transmittance(const scene *s, const ray *r, real tmax, int skip, int *blocker);
 
 #endif

@@ -104,15 +104,17 @@ static void media_cross(const media *m, int mat, int entering, media *next)
 	next->count--;
 }
 
-static vec3 trace_ray(tracer *t, const ray *r, int level, real weight, const media *m,
-		      int *hit_object);
+static vec3 trace_ray(tracer *t, const ray *r, int skip, int level, real weight,
+		      const media *m, int *hit_object);
 
 /* The origin of the rays that leave a hit on the ray's side (shadow and mirror rays),
- * offset once for all of them, when the first one needs it. */
+ * offset once for all of them, when the first one needs it; and the object they cannot
+ * meet again (object_can_rehit), or -1. */
 typedef struct {
 	const hit *h;
 	vec3 point;
 	int made;
+	int skip;
 } departure;
 
 static vec3 departure_point(departure *d)
@@ -184,7 +186,7 @@ static vec3 shade_lights(tracer *t, departure *from, const material *mat, dir3 m
 			if (*cached >= 0 &&
 			    object_intersect(s, *cached, &shadow, REAL_C(0.0), distance, NULL))
 				continue;
-			pass = scene_transmittance(s, &shadow, distance, cached);
+			pass = scene_transmittance(s, &shadow, distance, from->skip, cached);
 		}
 		if (pass <= REAL_C(0.0))
 			continue;
@@ -204,7 +206,8 @@ static vec3 trace_mirror(tracer *t, departure *from, dir3 dir, int level, real w
 	next.origin = departure_point(from);
 	next.dir = dir;
 	t->stats.reflect_rays++;
-	return vec_scale(trace_ray(t, &next, level + 1, real_mul(weight, ks), m, NULL), ks);
+	return vec_scale(trace_ray(t, &next, from->skip, level + 1, real_mul(weight, ks), m, NULL),
+			 ks);
 }
 
 /* Refracted ray of weight kt (tinted by the surface colour, as NFF's T filters through
@@ -229,13 +232,13 @@ static vec3 trace_refraction(tracer *t, const ray *r, departure *from, const mat
 	next.dir = dir;
 	t->stats.refract_rays++;
 	return vec_scale(vec_mul(mat->color,
-				 trace_ray(t, &next, level + 1, real_mul(weight, mat->kt),
+				 trace_ray(t, &next, -1, level + 1, real_mul(weight, mat->kt),
 					   &next_media, NULL)),
 			 mat->kt);
 }
 
-static vec3 trace_ray(tracer *t, const ray *r, int level, real weight, const media *m,
-		      int *hit_object)
+static vec3 trace_ray(tracer *t, const ray *r, int skip, int level, real weight,
+		      const media *m, int *hit_object)
 {
 	const scene *s = t->scene;
 	const vec3 *absorb = m->count ? &s->materials[m->material[m->count - 1]].absorb : NULL;
@@ -257,7 +260,7 @@ static vec3 trace_ray(tracer *t, const ray *r, int level, real weight, const med
 						  r->origin.z == t->eye.origin.z
 					  ? &t->eye
 					  : NULL,
-				  REAL_FAR, &h)) {
+				  skip, REAL_FAR, &h)) {
 		if (hit_object)
 			*hit_object = -1;
 		/* A ray that never leaves an absorbing medium is absorbed completely. */
@@ -277,6 +280,7 @@ static vec3 trace_ray(tracer *t, const ray *r, int level, real weight, const med
 	from.h = &h;
 	from.point = h.point; /* until made */
 	from.made = 0;
+	from.skip = object_can_rehit(s, h.object, h.front) ? -1 : h.object;
 	color = shade_lights(t, &from, mat, mirror_dir, level);
 	if (!(h.t < HORIZON_T))
 		return bounded(color); /* no rays from the horizon */
@@ -294,7 +298,7 @@ static vec3 trace_ray(tracer *t, const ray *r, int level, real weight, const med
 vec3 tracer_eye(tracer *t, const ray *r, int *hit_object)
 {
 	int first;
-	vec3 color = trace_ray(t, r, 1, REAL_C(1.0), &t->eye_media, &first);
+	vec3 color = trace_ray(t, r, -1, 1, REAL_C(1.0), &t->eye_media, &first);
 	t->stats.eye_rays++;
 	if (first >= 0)
 		t->stats.eye_hits++;
