@@ -65,8 +65,9 @@ void origin_terms_init(const scene *s, vec3 origin, origin_terms *k)
 int object_can_rehit(const scene *s, int index, int front)
 {
 	int kind = s->objects[index].kind;
-	(void)front;
-	return !(kind == SHAPE_PLANE || kind == SHAPE_POLYGON || kind == SHAPE_PATCH);
+	if (kind == SHAPE_PLANE || kind == SHAPE_POLYGON || kind == SHAPE_PATCH)
+		return 0;
+	return !(REAL_FIXED && front && (kind == SHAPE_SPHERE || kind == SHAPE_HEDRON));
 }
 
 int scene_intersect(const scene *s, const ray *r, real tmax, hit *h)
