@@ -27,34 +27,47 @@ vec3 image_srgb_to_linear(vec3 srgb)
 }
 
 /* Linear value at which each 8-bit code starts: decode((code - 0.5) / 255), computed once
- * in the build's own type, so that code -> linear -> code returns the same code. A
- * binary search then encodes without a power per pixel. */
+ * in the build's own type, so that code -> linear -> code returns the same code; and for
+ * each j < 256 the largest code whose threshold is at most j / 256 (the thresholds times
+ * 256 are exact in every type). Encoding then starts from the code of linear's 1/256
+ * and steps up, without a power per pixel: a few steps, but near black, where the curve
+ * is steep (up to 13 codes in the first 1/256). */
+#define SRGB_STEPS 256 /* buckets of linear values in [0, 1) */
 static real srgb_thresholds[256];
+static unsigned char srgb_start[SRGB_STEPS];
 static int thresholds_ready;
 
 static void init_thresholds(void)
 {
-	int code;
+	int code, j;
 	srgb_thresholds[0] = REAL_C(0.0);
 	for (code = 1; code < 256; code++)
 		srgb_thresholds[code] =
 			decode_channel(real_div(real_from_int(code) - REAL_C(0.5), REAL_C(255.0)));
+	for (j = 0, code = 0; j < SRGB_STEPS; j++) {
+		while (code < 255 && srgb_thresholds[code + 1] * SRGB_STEPS <= real_from_int(j))
+			code++;
+		srgb_start[j] = (unsigned char)code;
+	}
 	thresholds_ready = 1;
 }
 
 unsigned char image_srgb_byte(real linear)
 {
-	int code = 0, step;
+	int code;
 	if (!thresholds_ready)
 		init_thresholds();
 	/* NaN fails every comparison and lands on 0, as do negatives. */
 	if (!(linear > REAL_C(0.0)))
 		return 0;
-	/* Largest code whose threshold is <= linear (the thresholds increase): one bit of
-	 * the code per step, from the top, with no bounds to keep. */
-	for (step = 128; step > 0; step >>= 1)
-		if (srgb_thresholds[code + step] <= linear)
-			code += step;
+	/* At 1 and above, past the last threshold (decode(254.5 / 255) < 1). */
+	if (!(linear < REAL_C(1.0)))
+		return 255;
+	/* Largest code whose threshold is <= linear (the thresholds increase), from the
+	 * largest one at or below linear's bucket. */
+	code = srgb_start[real_to_int(linear * SRGB_STEPS)];
+	while (code < 255 && srgb_thresholds[code + 1] <= linear)
+		code++;
 	return (unsigned char)code;
 }
 
