@@ -72,7 +72,7 @@ static int hedron_bounds(const scene *s, const object *o, vec3 *lo, vec3 *hi)
 				p = vec_madd(p, planes[k].offset, vec_cross(normal[i], normal[j]));
 				p = vec_scale(p, real_div(REAL_C(1.0), det));
 				for (m = 0; m < count + 6; m++) {
-					real slack = real_surface_offset(real_max(REAL_C(1.0), vec_max_abs(p)));
+					real slack = real_surface_offset(real_max(REAL_C(1.0), vec_max_abs(p)), 1);
 					if (vec_dot(normal[m], p) > planes[m].offset + slack)
 						break;
 				}
@@ -288,7 +288,7 @@ void bvh_build(scene *s)
 			/* Pad by the secondary-ray offset scale so rounding never loses a hit that
 			 * the object's own test would find. */
 			real pad = real_surface_offset(
-				real_max(REAL_C(1.0), real_max(vec_max_abs(lo), vec_max_abs(hi))));
+				real_max(REAL_C(1.0), real_max(vec_max_abs(lo), vec_max_abs(hi))), 1);
 			vec3 p = vec_make(pad, pad, pad);
 			object_lo[i] = vec_sub(lo, p);
 			object_hi[i] = vec_add(hi, p);

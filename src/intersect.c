@@ -95,8 +95,10 @@ int scene_intersect_from(const scene *s, const ray *r, const origin_terms *k, in
 			}
 		}
 	}
-	if (found)
+	if (found) {
 		face_forward(r, h);
+		h->rough = s->objects[h->object].kind == SHAPE_CONE;
+	}
 	return found;
 }
 

@@ -162,13 +162,17 @@ typedef int32_t unit;
  * the vector arithmetic from them saturates (real_add) rather than overflows. */
 #define REAL_FAR REAL_C(24000.0)
 /* Absolute precision: a hit point is good to a couple of LSB wherever it is. */
-/* The offset grows with the ray's scale (2^-13 of it, plus 16 LSB). Directions, normals
- * and their dot products are Q2.30 (unit, above), but the cone's quadratic and a patch's
- * blended normal still round to Q16.16: measured against the reference, 8 LSB + 2^-16
- * of the scale halves the pixels off by more than 2 levels on glass, polygons and
- * polyhedron.nff, but triples the dark speckles on cones.nff (1,350 -> 4,093 of 65,536)
- * and showpiece.nff (679 -> 1,644), whose cones need the larger offset. */
-#define real_surface_offset(scale) ((real)16 + ((scale) >> 13))
+/* The offset grows with the ray's scale. Directions, normals and their dot products are
+ * Q2.30 (unit, above), so a hit point is good to a few LSB plus about 2^-18 of the ray's
+ * scale, and secondary rays leave it by 8 LSB + 2^-16 of the scale. The cone's quadratic
+ * still rounds to Q16.16: a cone's hit (hit.rough) needs 16 LSB + 2^-13, which is also
+ * the bound the BVH pads boxes by. Measured against the reference at 160x120 (pixels off
+ * by more than 2 levels), the finer offset for all but cones: polyhedron.nff 0.031 % -> 0,
+ * hard/cube-diagonal 0.062 % -> 0, glass.nff 0.130 -> 0.062 %, polygons.nff 0.026 ->
+ * 0.005 %; 4 LSB + 2^-18 breaks glass.nff (19.7 %); the finer offset on cones too triples
+ * the dark speckles on cones.nff (1,350 -> 4,093 of 65,536 at 256x256). */
+#define real_surface_offset(scale, rough) \
+	((rough) ? (real)16 + ((scale) >> 13) : (real)8 + ((scale) >> 16))
 /* The hit point's own error is t * 2^-17 from the direction plus a couple of LSB: the
  * snapping grid is the power of two at or below 4 LSB + 2^-14 of the scale (measured on
  * scenes/hard/grid-edges.nff: errors up to 3,089 LSB at a scale of 2^28.2, grid 2^14). */
@@ -204,7 +208,7 @@ typedef real real2; /* floating point needs no wider type for squares */
 #define REAL_INPUT_LIMIT REAL_C(1e12)
 #define REAL_FAR REAL_C(1e15) /* a length beyond any scene's coordinates */
 #define real_ldexp(x, e) real_ldexp_((x), (e))
-#define real_surface_offset(scale) real_mul(REAL_OFFSET, (scale))
+#define real_surface_offset(scale, rough) ((void)(rough), real_mul(REAL_OFFSET, (scale)))
 /* The largest power of two at or below 2^-REAL_SNAP_BITS times scale (> 0), and x
  * rounded to a multiple of it: the quotient and product are exact, and |x| <= scale keeps
  * x / grid below 2^(REAL_SNAP_BITS + 1), where adding a half rounds exactly too. */

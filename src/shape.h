@@ -26,6 +26,8 @@ typedef struct {
 	int object;   /* index into scene.objects */
 	int front;    /* 1 when the ray arrived from the outside of the surface */
 	int flat;     /* 1 when shading is the geometric normal (all but patches): set with front */
+	int rough;    /* 1 when the hit point is only as good as Q16.16 (cones): rays leave it
+		       * by the larger offset (real.h); set with front */
 } hit;
 
 int sphere_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h);

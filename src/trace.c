@@ -61,19 +61,19 @@ void tracer_init(tracer *t, const scene *s, int depth, real cutoff)
 	}
 }
 
-vec3 trace_offset(vec3 p, dir3 side, real t)
+vec3 trace_offset(const hit *h, dir3 side)
 {
 #if RT_OFFSET_FIXED
 	/* The classic fixed epsilon, for comparison only: too small far from the origin,
 	 * too large for small objects (numerics.md section 2). */
-	(void)t;
-	return dir_madd(p, REAL_C(1e-4), side);
+	return dir_madd(h->point, REAL_C(1e-4), side);
 #else
 	/* The hit point's rounding error scales with its own size and the ray's length, not
 	 * with the unit of length: a scene modelled in metres with 50 um parts needs offsets
 	 * far below 1e-4. The small floor keeps a point at the origin off its surface. */
-	real scale = real_max(REAL_C(0.0009765625), real_max(vec_max_abs(p), real_fabs(t)));
-	return dir_madd(p, real_surface_offset(scale), side);
+	real scale = real_max(REAL_C(0.0009765625),
+			      real_max(vec_max_abs(h->point), real_fabs(h->t)));
+	return dir_madd(h->point, real_surface_offset(scale, h->rough), side);
 #endif
 }
 
@@ -120,7 +120,7 @@ typedef struct {
 static vec3 departure_point(departure *d)
 {
 	if (!d->made) {
-		d->point = trace_offset(d->h->point, d->h->normal, d->h->t);
+		d->point = trace_offset(d->h, d->h->normal);
 		d->made = 1;
 	}
 	return d->point;
@@ -228,7 +228,7 @@ static vec3 trace_refraction(tracer *t, const ray *r, departure *from, const mat
 	if (!optics_refract(r->dir, h->normal, eta, &dir))
 		return vec_mul(mat->color, trace_mirror(t, from, optics_reflect(r->dir, h->normal),
 							level, weight, mat->kt, m));
-	next.origin = trace_offset(h->point, dir_neg(h->normal), h->t);
+	next.origin = trace_offset(h, dir_neg(h->normal));
 	next.dir = dir;
 	t->stats.refract_rays++;
 	return vec_scale(vec_mul(mat->color,
@@ -282,9 +282,17 @@ static vec3 trace_ray(tracer *t, const ray *r, int skip, int level, real weight,
 	from.made = 0;
 	from.skip = object_can_rehit(s, h.object, h.front) ? -1 : h.object;
 	color = shade_lights(t, &from, mat, mirror_dir, level);
-	if (!(h.t < HORIZON_T))
-		return bounded(color); /* no rays from the horizon */
 	ks = real_min(mat->ks, MIRROR_MAX);
+	if (!(h.t < HORIZON_T)) {
+		/* No rays from the horizon (they would start beyond fixed point's range). Its
+		 * mirror ray would leave beyond everything in the scene, as its shadow rays do:
+		 * it sees the background (only another infinite plane could be in its way, and
+		 * is not looked for). */
+		if (ks > REAL_C(0.0) && level < t->depth && real_mul(weight, ks) >= t->cutoff &&
+		    !absorbing)
+			color = vec_madd(color, ks, s->background);
+		return bounded(color);
+	}
 	if (ks > REAL_C(0.0) && level < t->depth && real_mul(weight, ks) >= t->cutoff)
 		color = vec_add(color, trace_mirror(t, &from, mirror_dir, level, weight, ks, m));
 	if (mat->kt > REAL_C(0.0) && level < t->depth && real_mul(weight, mat->kt) >= t->cutoff)

@@ -36,8 +36,9 @@ void tracer_init(tracer *t, const scene *s, int depth, real cutoff);
  * first object hit, or -1; it may be NULL. */
 vec3 tracer_eye(tracer *t, const ray *r, int *hit_object);
 
-/* The offset origin of a ray leaving a surface at p on the side `side` points to:
- * moved by REAL_OFFSET times the scale of p's rounding error (numerics.md section 2). */
-vec3 trace_offset(vec3 p, dir3 side, real t);
+/* The offset origin of a ray leaving the hit h on the side `side` points to: moved by
+ * REAL_OFFSET times the scale of the hit point's rounding error (numerics.md section 2),
+ * in fixed point by the larger offset when the hit is rough (real.h). */
+vec3 trace_offset(const hit *h, dir3 side);
 
 #endif

@@ -121,7 +121,7 @@ static void from_dir(dir3 v, double out[3])
 static ray spawn(const hit *h, int outward, const double dir[3])
 {
 	ray r;
-	r.origin = trace_offset(h->point, outward ? h->normal : dir_neg(h->normal), h->t);
+	r.origin = trace_offset(h, outward ? h->normal : dir_neg(h->normal));
 	r.dir = dir_normalize(to_vec(dir));
 	return r;
 }
