@@ -28,9 +28,10 @@ void origin_terms_init(const scene *s, vec3 origin, origin_terms *k);
  * meet it again? Not a flat one (plane, polygon, patch): a line crosses its plane once,
  * there, and the surface offset already keeps the search from finding that crossing.
  * In fixed point not a sphere or polyhedron left from outside either (convex): there the
- * offset (16 LSB and more) is beyond the hit point's error and a sphere's c = |f|^2 - r^2
- * is exact, so the offset origin is outside. Floating point keeps testing them: c cancels
- * on huge spheres, and float finds such rays' self-hits on scenes/hard/bigspheres.nff.
+ * offset (8 LSB and more, real.h) is beyond the hit point's error and a sphere's
+ * c = |f|^2 - r^2 is exact, so the offset origin is outside. Floating point keeps testing
+ * them: c cancels on huge spheres, and float finds such rays' self-hits on
+ * scenes/hard/bigspheres.nff.
  * Such a ray's searches below may leave the object out (`skip`). */
 int object_can_rehit(const scene *s, int index, int front);
 
