@@ -341,8 +341,8 @@ static inline int box_hit(const bvh_node *n, const slab_ray *r, real tmax, real 
  * compiler makes two specialised copies. Nearest: the closest hit, shrinking tmax as hits
  * are found, children visited nearest first. Shadow: the product of the kt of every
  * transmitting object crossed, stopping at the first opaque one (*found gets it, or -1). */
-static inline real traverse(const scene *s, const ray *r, real tmax, hit *h, int shadow,
-			    int *found)
+static inline real traverse(const scene *s, const ray *r, int skip, real tmax, hit *h,
+			    int shadow, int *found)
 {
 	struct {
 		int node;
@@ -357,6 +357,8 @@ static inline real traverse(const scene *s, const ray *r, real tmax, hit *h, int
 #define VISIT(o)                                                                              \
 	do {                                                                                  \
 		int visit_ = (o);                                                             \
+		if (visit_ == skip) /* the object the ray leaves and cannot meet again */     \
+			break;                                                                \
 		if (shadow) {                                                                 \
 			if (object_intersect(s, visit_, r, REAL_C(0.0), tmax, NULL)) {       \
 				real kt_ = s->materials[s->objects[visit_].material].kt;    \
@@ -417,16 +419,16 @@ static inline real traverse(const scene *s, const ray *r, real tmax, hit *h, int
 	return pass;
 }
 
-int bvh_nearest(const scene *s, const ray *r, real tmax, hit *h)
+int bvh_nearest(const scene *s, const ray *r, int skip, real tmax, hit *h)
 {
 	int found;
-	(void)traverse(s, r, tmax, h, 0, &found);
+	(void)traverse(s, r, skip, tmax, h, 0, &found);
 	return found;
 }
 
-real bvh_transmittance(const scene *s, const ray *r, real tmax, int *blocker)
+real bvh_transmittance(const scene *s, const ray *r, int skip, real tmax, int *blocker)
 {
-	return traverse(s, r, tmax, NULL, 1, blocker);
+	return traverse(s, r, skip, tmax, NULL, 1, blocker);
 }
 
 #endif

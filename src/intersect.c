@@ -67,7 +67,7 @@ int object_can_rehit(const scene *s, int index, int front)
 	int kind = s->objects[index].kind;
 	if (kind == SHAPE_PLANE || kind == SHAPE_POLYGON || kind == SHAPE_PATCH)
 		return 0;
-	return !(REAL_FIXED && front && (kind == SHAPE_SPHERE || kind == SHAPE_HEDRON));
+	return !(front && (kind == SHAPE_SPHERE || kind == SHAPE_HEDRON));
 }
 
 int scene_intersect(const scene *s, const ray *r, real tmax, hit *h)
@@ -81,7 +81,7 @@ int scene_intersect_from(const scene *s, const ray *r, const origin_terms *k, in
 	int i, found = 0;
 #if RT_USE_BVH
 	if (s->bvh_node_count) {
-		found = bvh_nearest(s, r, tmax, h);
+		found = bvh_nearest(s, r, skip, tmax, h);
 	} else
 #endif
 	{
@@ -111,7 +111,7 @@ real scene_transmittance(const scene *s, const ray *r, real tmax, int skip, int 
 	*blocker = -1;
 #if RT_USE_BVH
 	if (s->bvh_node_count)
-		return bvh_transmittance(s, r, tmax, blocker);
+		return bvh_transmittance(s, r, skip, tmax, blocker);
 #endif
 	for (i = 0; i < s->object_count; i++) {
 		if (i != skip && object_intersect(s, i, r, REAL_C(0.0), tmax, NULL)) {

@@ -183,7 +183,7 @@ static vec3 shade_lights(tracer *t, departure *from, const material *mat, dir3 m
 		t->stats.shadow_rays++;
 		{
 			int *cached = &t->last_blocker[level - 1][i];
-			if (*cached >= 0 &&
+			if (*cached >= 0 && *cached != from->skip &&
 			    object_intersect(s, *cached, &shadow, REAL_C(0.0), distance, NULL))
 				continue;
 			pass = scene_transmittance(s, &shadow, distance, from->skip, cached);
