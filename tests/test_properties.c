@@ -773,6 +773,22 @@ static void energy(void)
 	CHECK_INT(beer_bad, 0);
 }
 
+/* Which objects a ray leaving them on the side it came from could meet again: flat ones
+ * never, convex ones (sphere, polyhedron) not from outside, a cone (not convex) always. */
+static void rehit_rule(void)
+{
+	static const int kinds[] = {SHAPE_PLANE, SHAPE_POLYGON, SHAPE_PATCH, SHAPE_SPHERE,
+				    SHAPE_HEDRON, SHAPE_CONE};
+	static const int from_outside[] = {0, 0, 0, 0, 0, 1};
+	static const int from_inside[] = {0, 0, 0, 1, 1, 1};
+	size_t i;
+	for (i = 0; i < sizeof kinds / sizeof kinds[0]; i++) {
+		s.objects[0].kind = kinds[i];
+		CHECK_INT(object_can_rehit(&s, 0, 1), from_outside[i]);
+		CHECK_INT(object_can_rehit(&s, 0, 0), from_inside[i]);
+	}
+}
+
 void suite_properties(void)
 {
 	static const sphere_setup spheres[] = {
@@ -821,4 +837,5 @@ void suite_properties(void)
 #endif
 
 	energy();
+	rehit_rule();
 }
