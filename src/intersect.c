@@ -67,7 +67,9 @@ int object_can_rehit(const scene *s, int index, int front)
 	int kind = s->objects[index].kind;
 	if (kind == SHAPE_PLANE || kind == SHAPE_POLYGON || kind == SHAPE_PATCH)
 		return 0;
-	return !(front && (kind == SHAPE_SPHERE || kind == SHAPE_HEDRON));
+	/* The others bound a convex solid: a sphere, a polyhedron, a cone's frustum (both
+	 * radii have one sign, parse.c). */
+	return !front;
 }
 
 int scene_intersect(const scene *s, const ray *r, real tmax, hit *h)

@@ -27,11 +27,12 @@ void origin_terms_init(const scene *s, vec3 origin, origin_terms *k);
 /* Can a ray that leaves object `index` on the side a hit came from (front: the outside)
  * meet it again? Not a flat one (plane, polygon, patch): a line crosses its plane once,
  * there, and the surface offset already keeps the search from finding that crossing. Nor
- * a sphere or polyhedron left from outside (convex: a ray from its surface outwards never
- * comes back). Any hit the search found there would be the hit point's own rounding:
- * float finds such false hits where c = |f|^2 - r^2 cancels on huge spheres
- * (scenes/hard/bigspheres.nff: 18 % of the pixels were off by more than 2 levels, now
- * 0.08 %). Such a ray's searches below leave the object out (`skip`). */
+ * a sphere, polyhedron or cone left from outside (each bounds a convex solid: a ray from
+ * its surface outwards never comes back). Any hit the search found there would be the hit
+ * point's own rounding: float finds such false hits where c = |f|^2 - r^2 cancels on huge
+ * spheres (scenes/hard/bigspheres.nff: 18 % of the pixels were off by more than 2 levels,
+ * now 0.08 %), fixed point on cones, whose quadratic rounds to Q16.16. Such a ray's
+ * searches below leave the object out (`skip`). */
 int object_can_rehit(const scene *s, int index, int front);
 
 /* scene_intersect, for a ray from k's origin (k may be NULL) that cannot meet object

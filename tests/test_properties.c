@@ -774,12 +774,13 @@ static void energy(void)
 }
 
 /* Which objects a ray leaving them on the side it came from could meet again: flat ones
- * never, convex ones (sphere, polyhedron) not from outside, a cone (not convex) always. */
+ * never, the others (sphere, polyhedron, cone: each bounds a convex solid) only from
+ * inside. */
 static void rehit_rule(void)
 {
 	static const int kinds[] = {SHAPE_PLANE, SHAPE_POLYGON, SHAPE_PATCH, SHAPE_SPHERE,
 				    SHAPE_HEDRON, SHAPE_CONE};
-	static const int from_outside[] = {0, 0, 0, 0, 0, 1};
+	static const int from_outside[] = {0, 0, 0, 0, 0, 0};
 	static const int from_inside[] = {0, 0, 0, 1, 1, 1};
 	size_t i;
 	for (i = 0; i < sizeof kinds / sizeof kinds[0]; i++) {
