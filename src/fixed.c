@@ -95,7 +95,8 @@ int32_t fixed_sqrt30(int32_t u)
  * in [1/4, 1), so 2^(30 + k) / sqrt(w) = 2^30 y for y = 1/sqrt(t) in (1, 2], which Newton's
  * y (3 - t y^2) / 2 refines from a table of 24 starting values (good to 2^-5) in three
  * steps (2^-9, 2^-18, then the 2^-30 that 32-bit products keep). Each step is three
- * 32 x 32 -> 64 products; dividing by a rounded root was a root and a division. */
+ * 32 x 32 -> 64 products (the first one narrower); dividing by a rounded root was a root
+ * and a division. */
 static uint32_t sqrt_mantissa(uint64_t w, int k)
 {
 	/* t = w / 4^k in Q0.32 (w's top 30 to 32 bits). */
@@ -119,8 +120,17 @@ fixed_reciprocal fixed_reciprocal_sqrt2(int64_t w)
 	}
 	k = (fixed_bit_length((uint64_t)w) + 1) / 2; /* sqrt(w) in [2^(k-1), 2^k) */
 	t = sqrt_mantissa((uint64_t)w, k);
-	y = (256u + start[(t >> 27) - 8]) << 22; /* Q2.30 */
-	for (i = 0; i < 3; i++) {
+	/* The first step starts from the table's 9 bits y0 (y = y0 2^22 in Q2.30), so each
+	 * of its products is a 32-bit number's two 16-bit halves times y0: with the bits
+	 * the 64-bit products below keep, t y / 2^32 is t y0 / 2^10, (t y) y / 2^30 is
+	 * (t y) y0 / 2^8 and y m / 2^31 is m y0 / 2^9 (floors, the last two modulo 2^32).
+	 * Two 16 x 16 products each, not four. */
+	y = 256u + start[(t >> 27) - 8];
+	ty = ((t >> 16) * y << 6) + ((t & 0xFFFFu) * y >> 10);    /* t y in Q2.30 */
+	ty = ((ty >> 16) * y << 8) + ((ty & 0xFFFFu) * y >> 8);   /* t y^2 in Q2.30 */
+	ty = 0xC0000000u - ty;                                    /* 3 - t y^2 */
+	y = ((ty >> 16) * y << 7) + ((ty & 0xFFFFu) * y >> 9);    /* y (3 - t y^2) / 2 */
+	for (i = 0; i < 2; i++) {
 		fixed_umul64_parts(t, y, &low, &ty);    /* t y in Q2.30 */
 		fixed_umul64_parts(ty, y, &low, &high); /* t y^2 in Q4.60 */
 		/* 3 - t y^2 in Q2.30 (t y^2 is within 2^-4 of 1 from the first step on). */
