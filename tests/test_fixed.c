@@ -321,6 +321,21 @@ static void test_narrow_kernels(void)
 	}
 	CHECK_INT(mismatches, 0);
 	CHECK_INT(checked, 6400);
+	{
+		/* Quotients of every size (the 16- and 32-step paths) and remainders from 0 to
+		 * d - 1: n = q d + r, which the division must give back. */
+		int wrong = 0;
+		for (i = 0; i < 100000; i++) {
+			uint32_t d = next_random(&state) >> (next_random(&state) % 32u);
+			uint32_t q = next_random(&state) >> (next_random(&state) % 32u), r;
+			d = d ? d : 1u;
+			r = i % 3 == 0 ? 0u : i % 3 == 1 ? d - 1 : next_random(&state) % d;
+			if (fixed_udiv_narrow((uint64_t)q * d + r, d) != q ||
+			    fixed_udiv((uint64_t)q * d + r, d) != q)
+				wrong++;
+		}
+		CHECK_INT(wrong, 0);
+	}
 	/* Division's saturation and rounding edges. */
 	CHECK(fixed_udiv_narrow((uint64_t)1 << 32, 1) == UINT32_MAX);
 	CHECK(fixed_udiv_narrow(((uint64_t)1 << 32) - 1, 1) == UINT32_MAX);
