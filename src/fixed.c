@@ -95,19 +95,27 @@ int32_t fixed_sqrt30(int32_t u)
  * in [1/4, 1), so 2^(30 + k) / sqrt(w) = 2^30 y for y = 1/sqrt(t) in (1, 2], which Newton's
  * y (3 - t y^2) / 2 refines from a table of 24 starting values (good to 2^-5) in three
  * steps (2^-9, 2^-18, then the 2^-30 that 32-bit products keep). Each step is three
- * 32 x 32 -> 64 products; dividing by a rounded root was a root and a division. */
+ * 32 x 32 -> 64 products (the first one narrower); dividing by a rounded root was a root
+ * and a division. */
 static uint32_t sqrt_mantissa(uint64_t w, int k)
 {
-	/* t = w / 4^k in Q0.32 (w's top 30 to 32 bits). */
-	return 2 * k >= 32 ? (uint32_t)(w >> (2 * k - 32)) : (uint32_t)w << (32 - 2 * k);
+	/* t = w / 4^k in Q0.32 (w's top 30 to 32 bits), from w's 32-bit halves: a 64-bit
+	 * shift is a library call on small cores. k is 1 to 32, so s is -30 to 32. */
+	uint32_t high = (uint32_t)(w >> 32), low = (uint32_t)w;
+	int s = 2 * k - 32;
+	if (s <= 0)
+		return low << -s;
+	return s == 32 ? high : high << (32 - s) | low >> s;
 }
 
 fixed_reciprocal fixed_reciprocal_sqrt2(int64_t w)
 {
-	static const uint8_t start[24] = {
+	static const uint8_t start[32] = {
+		0,   0,   0,   0,   0,   0,   0,   0,
 		241, 214, 191, 171, 154, 138, 124, 112, 101, 90, 81, 72,
 		64,  56,  49,  43,  37,  31,  25,  20,  15,  11, 6,  2,
-	}; /* 1/sqrt(t) - 1 in Q0.8 at the middle of t's 24 intervals of 1/32 from 1/4 */
+	}; /* 1/sqrt(t) - 1 in Q0.8 at the middle of t's 24 intervals of 1/32 from 1/4, at
+	    * index 32 t (the first 8 are never read: t >= 1/4) */
 	fixed_reciprocal r;
 	uint32_t t, y, low, high, ty;
 	int k, i;
@@ -119,8 +127,17 @@ fixed_reciprocal fixed_reciprocal_sqrt2(int64_t w)
 	}
 	k = (fixed_bit_length((uint64_t)w) + 1) / 2; /* sqrt(w) in [2^(k-1), 2^k) */
 	t = sqrt_mantissa((uint64_t)w, k);
-	y = (256u + start[(t >> 27) - 8]) << 22; /* Q2.30 */
-	for (i = 0; i < 3; i++) {
+	/* The first step starts from the table's 9 bits y0 (y = y0 2^22 in Q2.30), so each
+	 * of its products is a 32-bit number's two 16-bit halves times y0: with the bits
+	 * the 64-bit products below keep, t y / 2^32 is t y0 / 2^10, (t y) y / 2^30 is
+	 * (t y) y0 / 2^8 and y m / 2^31 is m y0 / 2^9 (floors, the last two modulo 2^32).
+	 * Two 16 x 16 products each, not four. */
+	y = 256u + start[t >> 27];
+	ty = ((t >> 16) * y << 6) + ((t & 0xFFFFu) * y >> 10);    /* t y in Q2.30 */
+	ty = ((ty >> 16) * y << 8) + ((ty & 0xFFFFu) * y >> 8);   /* t y^2 in Q2.30 */
+	ty = 0xC0000000u - ty;                                    /* 3 - t y^2 */
+	y = ((ty >> 16) * y << 7) + ((ty & 0xFFFFu) * y >> 9);    /* y (3 - t y^2) / 2 */
+	for (i = 0; i < 2; i++) {
 		fixed_umul64_parts(t, y, &low, &ty);    /* t y in Q2.30 */
 		fixed_umul64_parts(ty, y, &low, &high); /* t y^2 in Q4.60 */
 		/* 3 - t y^2 in Q2.30 (t y^2 is within 2^-4 of 1 from the first step on). */

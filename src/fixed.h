@@ -338,23 +338,27 @@ static inline uint32_t fixed_udiv_narrow(uint64_t n, uint32_t d)
 	}
 #if FIXED_ASM
 	/* (rem, low) shifts left as one 64-bit number; a carry out of rem means the
-	 * remainder passed 2^32 > d. */
+	 * remainder passed 2^32 > d. Four steps per pass (16 and 32 are multiples of 4):
+	 * the count and its branch once per four quotient bits. Each step's labels 2 and 3
+	 * are its own: `2f` and `3f` name the next ones. */
+#define FIXED_UDIV_STEP                     \
+	"adds %[low], %[low]\n\t"          \
+	"adcs %[rem], %[rem]\n\t"          \
+	"bcs 2f\n\t"                       \
+	"cmp %[rem], %[d]\n\t"             \
+	"bcc 3f\n"                          \
+	"2:\n\t"                           \
+	"subs %[rem], %[d]\n\t"            \
+	"adds %[low], #1\n"                 \
+	"3:\n\t"
 	__asm__(".syntax unified\n"
-		"1:\n\t"
-		"adds %[low], %[low]\n\t"
-		"adcs %[rem], %[rem]\n\t"
-		"bcs 2f\n\t"
-		"cmp %[rem], %[d]\n\t"
-		"bcc 3f\n"
-		"2:\n\t"
-		"subs %[rem], %[d]\n\t"
-		"adds %[low], #1\n"
-		"3:\n\t"
-		"subs %[steps], #1\n\t"
+		"1:\n\t" FIXED_UDIV_STEP FIXED_UDIV_STEP FIXED_UDIV_STEP FIXED_UDIV_STEP
+		"subs %[steps], #4\n\t"
 		"bne 1b"
 		: [low] "+l"(low), [rem] "+l"(rem), [steps] "+l"(steps)
 		: [d] "l"(d)
 		: "cc");
+#undef FIXED_UDIV_STEP
 #else
 	for (; steps > 0; steps--) {
 		/* rem < d, so 2 rem + 1 < 2^33: the bit shifted out is the 33rd. */

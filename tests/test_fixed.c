@@ -43,6 +43,37 @@ static void test_products(void)
 	CHECK((int64_t)Q(0.001) * Q(0.001) == 4356);
 }
 
+/* fixed_reciprocal_sqrt2 by its definition: the table's start and three Newton steps,
+ * every product in plain 64-bit arithmetic (as the host computes them). */
+static fixed_reciprocal reference_reciprocal_sqrt2(int64_t w)
+{
+	static const uint8_t start[24] = {
+		241, 214, 191, 171, 154, 138, 124, 112, 101, 90, 81, 72,
+		64,  56,  49,  43,  37,  31,  25,  20,  15,  11, 6,  2,
+	};
+	fixed_reciprocal r;
+	uint64_t x = (uint64_t)w;
+	uint32_t t, y, ty, m;
+	int k = 0, i;
+	r.negative = 0;
+	r.scale = 0;
+	r.shift = 15;
+	if (w <= 0)
+		return r;
+	while (k < 32 && x >> (2 * k)) /* sqrt(w) in [2^(k-1), 2^k) */
+		k++;
+	t = 2 * k >= 32 ? (uint32_t)(x >> (2 * k - 32)) : (uint32_t)x << (32 - 2 * k);
+	y = (256u + start[(t >> 27) - 8]) << 22;
+	for (i = 0; i < 3; i++) {
+		ty = (uint32_t)(((uint64_t)t * y) >> 32);
+		m = 0xC0000000u - (uint32_t)(((uint64_t)ty * y) >> 30);
+		y = (uint32_t)(((uint64_t)y * m) >> 31);
+	}
+	r.scale = y;
+	r.shift = 14 + k;
+	return r;
+}
+
 static void test_roots(void)
 {
 	int32_t third;
@@ -90,6 +121,30 @@ static void test_roots(void)
 		  Q(3.0));
 	CHECK_INT(fixed_times_reciprocal(Q(2.0), fixed_reciprocal_sqrt2(0)), FIXED_MAX);
 	CHECK_INT(fixed_sqrt_by_reciprocal(0, fixed_reciprocal_sqrt2(0)), 0);
+	{
+		/* The same bits as the definition (whose first step's products fold to 16-bit
+		 * halves times the table's 9 bits): every power of two and its neighbours, then
+		 * seeded random numbers of every size. */
+		uint32_t state = 31u;
+		int i, wrong = 0;
+		for (i = 0; i < 200000; i++) {
+			int64_t w;
+			fixed_reciprocal r, expect;
+			if (i < 63 * 3)
+				w = ((int64_t)1 << (i / 3)) + (i % 3) - 1;
+			else
+				w = (int64_t)(((uint64_t)next_random(&state) << 32 | next_random(&state)) >>
+					      (1 + next_random(&state) % 63u));
+			r = fixed_reciprocal_sqrt2(w);
+			expect = reference_reciprocal_sqrt2(w);
+			if (r.scale != expect.scale || r.shift != expect.shift ||
+			    r.negative != expect.negative)
+				wrong++;
+		}
+		CHECK_INT(wrong, 0);
+		CHECK(fixed_reciprocal_sqrt2(INT64_MAX).scale == reference_reciprocal_sqrt2(INT64_MAX).scale);
+		CHECK(fixed_reciprocal_sqrt2(-1).scale == 0);
+	}
 	{
 		/* Seeded random vectors of every size: each component over the length within
 		 * 0.5 LSB (rounding) plus 2^-10 LSB (the reciprocal's 2^-29); the length within
@@ -266,6 +321,21 @@ static void test_narrow_kernels(void)
 	}
 	CHECK_INT(mismatches, 0);
 	CHECK_INT(checked, 6400);
+	{
+		/* Quotients of every size (the 16- and 32-step paths) and remainders from 0 to
+		 * d - 1: n = q d + r, which the division must give back. */
+		int wrong = 0;
+		for (i = 0; i < 100000; i++) {
+			uint32_t d = next_random(&state) >> (next_random(&state) % 32u);
+			uint32_t q = next_random(&state) >> (next_random(&state) % 32u), r;
+			d = d ? d : 1u;
+			r = i % 3 == 0 ? 0u : i % 3 == 1 ? d - 1 : next_random(&state) % d;
+			if (fixed_udiv_narrow((uint64_t)q * d + r, d) != q ||
+			    fixed_udiv((uint64_t)q * d + r, d) != q)
+				wrong++;
+		}
+		CHECK_INT(wrong, 0);
+	}
 	/* Division's saturation and rounding edges. */
 	CHECK(fixed_udiv_narrow((uint64_t)1 << 32, 1) == UINT32_MAX);
 	CHECK(fixed_udiv_narrow(((uint64_t)1 << 32) - 1, 1) == UINT32_MAX);
