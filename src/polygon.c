@@ -119,7 +119,8 @@ int polygon_intersect(const scene *s, const object *o, const ray *r, real tmin, 
 		 * way in all of them (without the snap, by which way p happened to round). The
 		 * grid's powers of two keep every exactly placed point on it. */
 		real grid = real_snap_grid(real_max(real_max(vec_max_abs(p), real_fabs(t)),
-						    REAL_C(0.0009765625)));
+						    REAL_C(0.0009765625)),
+					   s->snap_limit);
 		vec2 q = polygon_project(p, poly->axis);
 		if (!polygon_contains_2d(s->projected + poly->first, poly->count,
 					 real_snap(q.u, grid), real_snap(q.v, grid)))

@@ -17,6 +17,11 @@
 #define REAL_TEXT_NOT_FINITE 2   /* NaN, infinity, or too large for any type */
 #define REAL_TEXT_OUT_OF_RANGE 3 /* finite, but beyond what this build reads */
 
+/* Smaller and larger of two numbers of any of the types below (a macro, for real, unit
+ * and real2 alike). */
+#define real_min(a, b) ((a) < (b) ? (a) : (b))
+#define real_max(a, b) ((a) > (b) ? (a) : (b))
+
 #if defined(RT_REAL_FIXED)
 #include "fixed.h"
 #else
@@ -31,18 +36,21 @@
  * off the surface (times max(1, |p|inf, t)): a few thousand ulps of the hit point,
  * well above the hit point's rounding error and well below any feature size.
  * REAL_SNAP_BITS sets the grid the polygon test snaps hit points to (real_snap_grid):
- * 2^-REAL_SNAP_BITS times the hit point's scale, rounded down to a power of two, a wide
- * margin over the hit point's own error (scenes/hard/grid-edges.nff: at most 2^-25 of
- * the scale in float, 2^-53 in double). Long double snaps as coarsely as double: a
- * scene's decimal numbers (53.13010235415598 for 2 atan(1/2) degrees) are themselves off
- * by some 2^-56, which long double would otherwise see. */
+ * 2^-REAL_SNAP_BITS times the hit point's scale, rounded down to a power of two, a
+ * margin of 4 over the hit point's own error (scenes/hard/grid-edges.nff: at most 2^-25
+ * of the scale in float, 2^-53 in double) and no coarser than a 256th of the scene's
+ * shortest polygon edge (scene.snap_limit), so that no polygon is lost in its cells. Long
+ * double snaps as coarsely as double: a scene's decimal numbers (53.13010235415598 for
+ * 2 atan(1/2) degrees) are themselves off by some 2^-56, which long double would otherwise
+ * see. */
 #if defined(RT_REAL_FLOAT)
 typedef float real;
 #define REAL_NAME "float"
 #define REAL_C(x) ((float)(x))
 #define REAL_MAX FLT_MAX
 #define REAL_OFFSET REAL_C(6.103515625e-05) /* 2^-14 = 512 ulp */
-#define REAL_SNAP_BITS 19 /* grid 2^-19 = 16 ulp of the scale */
+#define REAL_SNAP_BITS 21 /* grid 2^-21 = 4 ulp of the scale */
+#define REAL_MANT_DIG FLT_MANT_DIG
 #define real_floor floorf
 #define real_scalbn scalbnf
 #define real_ilogb ilogbf
@@ -59,7 +67,8 @@ typedef double real;
 #define REAL_C(x) ((double)(x))
 #define REAL_MAX DBL_MAX
 #define REAL_OFFSET REAL_C(9.313225746154785e-10) /* 2^-30 = 2^22 ulp */
-#define REAL_SNAP_BITS 47 /* grid 2^-47 = 32 ulp */
+#define REAL_SNAP_BITS 49 /* grid 2^-49 = 8 ulp */
+#define REAL_MANT_DIG DBL_MANT_DIG
 #define real_floor floor
 #define real_scalbn scalbn
 #define real_ilogb ilogb
@@ -76,7 +85,8 @@ typedef long double real;
 #define REAL_C(x) ((long double)(x))
 #define REAL_MAX LDBL_MAX
 #define REAL_OFFSET REAL_C(9.094947017729282e-13) /* 2^-40 = 2^23 ulp */
-#define REAL_SNAP_BITS 47 /* as double's: see below */
+#define REAL_SNAP_BITS 49 /* as double's: see below */
+#define REAL_MANT_DIG LDBL_MANT_DIG
 #define real_floor floorl
 #define real_scalbn scalbnl
 #define real_ilogb ilogbl
@@ -173,22 +183,27 @@ typedef int32_t unit;
  * the dark speckles on cones.nff (1,350 -> 4,093 of 65,536 at 256x256). */
 #define real_surface_offset(scale, rough) \
 	((rough) ? (real)16 + ((scale) >> 13) : (real)8 + ((scale) >> 16))
-/* The hit point's own error is t * 2^-17 from the direction plus a couple of LSB: the
- * snapping grid is the power of two at or below 4 LSB + 2^-14 of the scale (measured on
- * scenes/hard/grid-edges.nff: errors up to 3,089 LSB at a scale of 2^28.2, grid 2^14). */
-static inline real real_snap_grid(real scale)
+/* The largest power of two at or below x >= 1: the lowest set bit cleared until one is
+ * left (fewer instructions in flash than a bit length). */
+static inline real real_power_of_two_below(real x)
 {
-	real grid = 4 + (scale >> 14);
-	/* Clearing the lowest set bit until one is left: the top power of two (fewer
-	 * instructions in flash than a bit length). */
-	while (grid & (grid - 1))
-		grid &= grid - 1;
-	return grid;
+	while (x & (x - 1))
+		x &= x - 1;
+	return x;
 }
-/* x rounded to a multiple of grid (a power of two), halves upwards. */
+/* The hit point's own error is a few LSB, and t * 2^-17 where an eye ray's direction is
+ * summed in Q16.16 before it is normalised: the snapping grid is the power of two at or
+ * below 4 LSB + 2^-16 of the scale, and at most the scene's limit (itself a power of two
+ * of at least 1 LSB, which snaps nothing). */
+static inline real real_snap_grid(real scale, real limit)
+{
+	return real_min(real_power_of_two_below(4 + (scale >> 16)), limit);
+}
+/* x rounded to a multiple of grid (a power of two), halves upwards; saturating, for a
+ * point out at the range's end. */
 static inline real real_snap(real x, real grid)
 {
-	real up = x + grid / 2;
+	real up = fixed_add(x, grid / 2);
 	return up - (up & (grid - 1));
 }
 #define real_from_text(text, shift, out) fixed_from_text((text), (shift), (out))
@@ -209,16 +224,25 @@ typedef real real2; /* floating point needs no wider type for squares */
 #define REAL_FAR REAL_C(1e15) /* a length beyond any scene's coordinates */
 #define real_ldexp(x, e) real_ldexp_((x), (e))
 #define real_surface_offset(scale, rough) ((void)(rough), real_mul(REAL_OFFSET, (scale)))
-/* The largest power of two at or below 2^-REAL_SNAP_BITS times scale (> 0), and x
- * rounded to a multiple of it: the quotient and product are exact, and |x| <= scale keeps
- * x / grid below 2^(REAL_SNAP_BITS + 1), where adding a half rounds exactly too. */
-static inline real real_snap_grid(real scale)
+/* The largest power of two at or below x > 0. */
+static inline real real_power_of_two_below(real x)
 {
-	return real_scalbn(REAL_C(1.0), real_ilogb(scale) - REAL_SNAP_BITS);
+	return real_scalbn(REAL_C(1.0), real_ilogb(x));
+}
+/* The largest power of two at or below 2^-REAL_SNAP_BITS times scale (> 0) and at most
+ * the scene's limit, or 0 (no snapping) when that is below 2^(2 - REAL_MANT_DIG) of the
+ * scale, a few ulps, where rounding to it would not be exact. x rounded to a multiple of
+ * it: the quotient and product are exact, and with |x| <= scale x / grid is below
+ * 2^(REAL_MANT_DIG - 1), where adding a half rounds exactly too. */
+static inline real real_snap_grid(real scale, real limit)
+{
+	int e = real_ilogb(scale);
+	real grid = real_min(real_scalbn(REAL_C(1.0), e - REAL_SNAP_BITS), limit);
+	return grid >= real_scalbn(REAL_C(1.0), e + 2 - REAL_MANT_DIG) ? grid : REAL_C(0.0);
 }
 static inline real real_snap(real x, real grid)
 {
-	return real_floor(x / grid + REAL_C(0.5)) * grid;
+	return grid > REAL_C(0.0) ? real_floor(x / grid + REAL_C(0.5)) * grid : x;
 }
 /* Reading numbers: real_from_text converts a whole token, times 2^shift (the scene's
  * length scale, always 0 in floating point), and returns a REAL_TEXT_ status. */
@@ -299,8 +323,6 @@ typedef real real_reciprocal;
  * real2_dot3 is a dot product as a real2, real2_from widens, real2_sqrt gives back a real length, real2_div(w, b) is w / b as a
  * real, real2_ratio(a, b) is a / b as a real, real2_scale(w, a) is w * a for a unitless a. */
 
-#define real_min(a, b) ((a) < (b) ? (a) : (b))
-#define real_max(a, b) ((a) > (b) ? (a) : (b))
 
 /* Range budget (floating point): every number in a scene is at most 1e12 in magnitude,
  * so squares and dot products of coordinates (1e24 at most) and the bounding box

@@ -119,6 +119,8 @@ typedef struct {
 	vec3 ambient;
 	int depth;   /* ray tree levels, 1..RT_MAX_DEPTH */
 	real cutoff; /* smallest path weight still traced */
+	real snap_limit; /* the polygon test's largest snapping grid (real.h): a power of two
+			  * at most 1/256 of the shortest polygon edge */
 
 	int material_count, light_count, object_count, vertex_count, plane_count;
 	material materials[RT_MAX_MATERIALS];

@@ -61,6 +61,22 @@ if diff=$(python3 tests/imgcmp.py "$tmp/fixed.ppm" "$tmp/ref.ppm"); then ok; els
 	bad "horizon: the mirror floor against the reference: $diff"
 fi
 
+# Small polygons far from the origin (triangles 0.1 across at x = 900, a 1/9000 of the
+# scene): the polygon test's snapping grid stays below them (real.h, scene.snap_limit).
+{
+	printf 'v\nfrom 900 0 -6\nat 900 0 0\nup 0 1 0\nangle 30\nhither 0.001\nresolution 64 64\n'
+	printf 'b 0 0 0\nl 900 0 -10\nf 1 1 1 1 0 0 0 1\ns -1000 0 0 1\n'
+	awk 'BEGIN { for (i = 0; i < 11; i++) for (j = 0; j < 11; j++) {
+		x = 898.537 + 0.3 * i; y = -1.489 + 0.3 * j
+		printf "p 3\n%.3f %.3f 0\n%.3f %.3f 0\n%.3f %.3f 0\n", x, y, x, y + 0.1, x + 0.1, y } }'
+} >"$tmp/small.nff"
+"$FIXED" --ids -o "$tmp/fixed.pgm" "$tmp/small.nff"
+"$REF" --ids -o "$tmp/ref.pgm" "$tmp/small.nff"
+share=$(python3 tests/idcmp.py "$tmp/fixed.pgm" "$tmp/ref.pgm")
+if awk -v s="$share" 'BEGIN { exit !(s <= 0.5) }'; then ok; else
+	bad "small polygons far out: $share% of pixels hit another object than the reference"
+fi
+
 # No floating point at all: no SSE/x87 instruction in the program (x86-64 only).
 if command -v objdump >/dev/null 2>&1 && [ "$(uname -m)" = x86_64 ]; then
 	count=$(objdump -d "$FIXED" | grep -cE '\b(xmm[0-9]|ymm[0-9]|cvt|fld|fst)' || true)

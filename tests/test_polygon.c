@@ -155,6 +155,8 @@ static void test_shared(void)
 	object a, b, c, d;
 
 	s.vertex_count = 0;
+	/* The parser's limit for these unit squares: a 256th of their edges. */
+	s.snap_limit = REAL_C(0.00390625);
 	a = xy_polygon(unit_square, 4, 0);
 	b = xy_polygon(right, 4, 0);
 	c = xy_polygon(top_left, 4, 0);
@@ -168,13 +170,14 @@ static void test_shared(void)
 	CHECK_INT(contains(&c, REAL_C(1.0), REAL_C(1.0)), 0);
 	CHECK_INT(contains(&d, REAL_C(1.0), REAL_C(1.0)), 0);
 
-	/* The same through polygon_intersect from hit points a few rounding errors off the
-	 * edge and the corner, to either side (float 2^-21 = 4 ulp of 1, double and long
-	 * double 2^-50, Q16.16 2 LSB): each goes where the exact point goes, in every type
-	 * (hit points are snapped to a grid of 2^-19 of their scale or finer, real.h). */
+	/* The same through polygon_intersect from hit points a rounding error or two off the
+	 * edge and the corner, to either side (float 2^-23 = 1 ulp of 1, double and long
+	 * double 2^-51 = 2 ulp, Q16.16 1 LSB): each goes where the exact point goes, in every
+	 * type (hit points are snapped to a grid of 2^-21 of their scale in float, 2^-49 in
+	 * double, 4 LSB here in Q16.16: real.h). */
 	{
 		static const double sides[4][2] = {{1, 1}, {1, -1}, {-1, 1}, {-1, -1}};
-		double off = TOL3(ldexp(1.0, -21), ldexp(1.0, -50), 2 * LSB);
+		double off = TOL3(ldexp(1.0, -23), ldexp(1.0, -51), 1 * LSB);
 		int k, hits_a_edge = 0, hits_b_edge = 0, hits_a_corner = 0, hits_other_corner = 0;
 		for (k = 0; k < 4; k++) {
 			hit h;
