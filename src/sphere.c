@@ -34,8 +34,7 @@ int solve_quadratic(real a, real b, real2 c, real2 discriminant, real *t0, real 
 int sphere_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h)
 {
 	origin_term k;
-	k.f = vec_sub(r->origin, o->u.sphere.center);
-	k.u.c = vec_dot2(k.f, k.f) - o->u.sphere.radius2;
+	origin_term_init(o, r->origin, &k);
 	return sphere_intersect_from(o, r, &k, tmin, tmax, h);
 }
 
@@ -74,11 +73,11 @@ int sphere_intersect_from(const object *o, const ray *r, const origin_term *k, r
 	t0 = -b - root;
 	t1 = -b + root;
 #else
-	/* a = |d|^2 is 1 only up to rounding, and fixed point's directions are short by up
-	 * to 2^-16: over a long ray that would put the hit point far off the surface, so
-	 * the quadratic keeps its a. Perpendicular offset of the centre from the ray line
-	 * (terms of size r^2, not |f|^2); b^2 - a c = a (r^2 - |v|^2), written as
-	 * D + D (a - 1) to keep fixed point's low bits. */
+	/* a = |d|^2 is 1 only up to rounding (in fixed point it is |d|^2 in Q2.30 rounded to
+	 * Q16.16, so mostly exactly 1): over a long ray a unit-length assumption would put
+	 * the hit point off the surface, so the quadratic keeps its a. Perpendicular offset
+	 * of the centre from the ray line (terms of size r^2, not |f|^2); b^2 - a c =
+	 * a (r^2 - |v|^2), written as D + D (a - 1) to keep fixed point's low bits. */
 	real a;
 	vec3 v;
 	/* A clear miss by the textbook discriminant b^2 - a c (cheap: no division, no root)
