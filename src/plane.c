@@ -10,7 +10,7 @@
 int plane_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h)
 {
 	origin_term k;
-	origin_term_init(o, r->origin, &k);
+	k.u.distance = o->u.plane.offset - dir_dot_vec(o->u.plane.normal, r->origin);
 	return plane_intersect_from(o, r, &k, tmin, tmax, h);
 }
 

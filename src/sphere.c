@@ -34,7 +34,8 @@ int solve_quadratic(real a, real b, real2 c, real2 discriminant, real *t0, real 
 int sphere_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h)
 {
 	origin_term k;
-	origin_term_init(o, r->origin, &k);
+	k.f = vec_sub(r->origin, o->u.sphere.center);
+	k.u.c = vec_dot2(k.f, k.f) - o->u.sphere.radius2;
 	return sphere_intersect_from(o, r, &k, tmin, tmax, h);
 }
 
