@@ -205,16 +205,19 @@ FIXED_PARTS int64_t fixed_join_parts(uint32_t low, int32_t high)
 	return (int64_t)(((uint64_t)(uint32_t)high << 32) | low);
 }
 
-/* fixed_saturate(((high << 32) + low + 2^15) >> 16): a Q32.32 value rounded to Q16.16,
- * in 32-bit steps. */
-FIXED_PARTS int32_t fixed_round_parts(uint32_t low, int32_t high)
+/* fixed_saturate(((high << 32) + low + 2^(bits - 1)) >> bits), in 32-bit steps (no 64-bit
+ * shift and no call): bits = 16 rounds a Q32.32 value to Q16.16; bits = 30 rounds a product
+ * with a Q2.30 factor (Q4.60, or Q18.46 for a Q16.16 one) back to its other factor's
+ * format. bits is a constant at every call (16 or 30). */
+FIXED_PARTS int32_t fixed_round_parts(uint32_t low, int32_t high, int bits)
 {
+	uint32_t half = (uint32_t)1 << (bits - 1);
 	int32_t v;
-	fixed_add_parts(&low, &high, 0x8000u, 0);
-	/* In range when high is in [-2^15, 2^15), but for -2^31 itself: one unsigned test
-	 * (the conversion to int32_t wraps, as on every compiler rt supports). */
-	v = (int32_t)(((uint32_t)high << 16) | (low >> 16));
-	if (((uint32_t)high + 0x8000u) >> 16 || v == INT32_MIN)
+	fixed_add_parts(&low, &high, half, 0);
+	/* In range when high is in [-2^(bits - 1), 2^(bits - 1)), but for -2^31 itself: one
+	 * unsigned test (the conversion to int32_t wraps, as on every compiler rt supports). */
+	v = (int32_t)(((uint32_t)high << (32 - bits)) | (low >> bits));
+	if (((uint32_t)high + half) >> bits || v == INT32_MIN)
 		return high < 0 ? -INT32_MAX : INT32_MAX;
 	return v;
 }
@@ -225,7 +228,7 @@ FIXED_PARTS int32_t fixed_mul_narrow(int32_t a, int32_t b)
 	uint32_t low;
 	int32_t high;
 	fixed_wide_mul_parts(a, b, &low, &high);
-	return fixed_round_parts(low, high);
+	return fixed_round_parts(low, high, 16);
 }
 
 FIXED_PARTS void fixed_dot3_parts(int32_t ax, int32_t ay, int32_t az, int32_t bx,
@@ -246,7 +249,7 @@ FIXED_PARTS int32_t fixed_dot3_narrow(int32_t ax, int32_t ay, int32_t az, int32_
 	uint32_t low;
 	int32_t high;
 	fixed_dot3_parts(ax, ay, az, bx, by, bz, &low, &high);
-	return fixed_round_parts(low, high);
+	return fixed_round_parts(low, high, 16);
 }
 
 FIXED_PARTS int64_t fixed_dot3_wide_narrow(int32_t ax, int32_t ay, int32_t az, int32_t bx,
@@ -258,26 +261,13 @@ FIXED_PARTS int64_t fixed_dot3_wide_narrow(int32_t ax, int32_t ay, int32_t az, i
 	return fixed_join_parts(low, high);
 }
 
-/* fixed_saturate(((high << 32) + low + 2^29) >> 30): a product or dot product of Q2.30
- * numbers (Q4.60, or Q18.46 for a Q16.16 factor) rounded at bit 30, in 32-bit steps as
- * fixed_round_parts: no 64-bit shift and no call. */
-FIXED_PARTS int32_t fixed_round30_parts(uint32_t low, int32_t high)
-{
-	int32_t v;
-	fixed_add_parts(&low, &high, 0x20000000u, 0);
-	/* In range when high is in [-2^29, 2^29), but for -2^31 itself. */
-	v = (int32_t)(((uint32_t)high << 2) | (low >> 30));
-	if (((uint32_t)high + 0x20000000u) >> 30 || v == INT32_MIN)
-		return high < 0 ? -INT32_MAX : INT32_MAX;
-	return v;
-}
-
+/* The same rounded at bit 30: products and dot products with Q2.30 numbers. */
 FIXED_PARTS int32_t fixed_mul30_narrow(int32_t a, int32_t b)
 {
 	uint32_t low;
 	int32_t high;
 	fixed_wide_mul_parts(a, b, &low, &high);
-	return fixed_round30_parts(low, high);
+	return fixed_round_parts(low, high, 30);
 }
 
 FIXED_PARTS int32_t fixed_dot3_30_narrow(int32_t ax, int32_t ay, int32_t az, int32_t bx,
@@ -286,7 +276,7 @@ FIXED_PARTS int32_t fixed_dot3_30_narrow(int32_t ax, int32_t ay, int32_t az, int
 	uint32_t low;
 	int32_t high;
 	fixed_dot3_parts(ax, ay, az, bx, by, bz, &low, &high);
-	return fixed_round30_parts(low, high);
+	return fixed_round_parts(low, high, 30);
 }
 
 /* Number of significant bits of x (0 for 0), by halving: a few steps, no loop. */
