@@ -274,11 +274,13 @@ int32_t fixed_tan_degrees(int32_t degrees)
 	int64_t t = fixed_round_div((int64_t)degrees * RADIANS_PER_DEGREE_Q44, INT64_C(1) << 32);
 	int64_t t2 = t * t >> 28, s = (int64_t)1 << 28, c = (int64_t)1 << 28;
 	int k;
-	for (k = 15; k >= 3; k -= 2)
-		s = ((int64_t)1 << 28) - fixed_div64(t2 * s >> 28, (int64_t)k * (k - 1));
+	/* Both series in one loop (one copy of its 64-bit arithmetic): the odd k are the
+	 * sine's terms (15 to 3), the even k the cosine's (16 to 2). */
+	for (k = 16; k >= 2; k--) {
+		int64_t *sum = k & 1 ? &s : &c;
+		*sum = ((int64_t)1 << 28) - fixed_div64(t2 * *sum >> 28, k * (k - 1));
+	}
 	s = t * s >> 28;
-	for (k = 16; k >= 2; k -= 2)
-		c = ((int64_t)1 << 28) - fixed_div64(t2 * c >> 28, (int64_t)k * (k - 1));
 	if (c <= 0)
 		return FIXED_MAX;
 	return fixed_saturate(fixed_round_div(s * 65536, c));
