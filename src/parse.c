@@ -4,10 +4,8 @@
  * See LICENSE for copyright and licence. */
 #include "parse.h"
 
-#include <errno.h>
 #include <limits.h>
 #include <stdarg.h>
-#include <stdlib.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -241,24 +239,39 @@ static int read_shine(lexer *lx, real *out)
 	return read_nonnegative(lx, "material Shine", out);
 }
 
-/* Reads a whole number in [lo, hi]; `limit` names the capacity macro behind hi, if any. */
+const char *parse_digits(const char *text, long max, long *out)
+{
+	long v = 0;
+	for (; *text >= '0' && *text <= '9'; text++)
+		if (v <= max)
+			v = v * 10 + (*text - '0');
+	*out = v;
+	return text;
+}
+
+/* Reads a whole number in [lo, hi]; `limit` names the capacity macro behind hi, if any.
+ * Read as strtol reads a token (which holds no spaces): a sign, then decimal digits. A
+ * magnitude past hi is held above it (the messages show the token, not the value), so
+ * a long run of digits is simply too large. */
 static int read_count(lexer *lx, const char *what, long lo, long hi, const char *limit,
 		      long *out)
 {
-	char *end;
+	const char *digits, *end;
 	*out = 0; /* defined even on failure, as in read_value */
 	if (!next_value(lx, what, 1))
 		return 0;
-	errno = 0;
-	*out = strtol(lx->tok, &end, 10);
-	if (end == lx->tok || *end != '\0')
+	digits = lx->tok + (lx->tok[0] == '-' || lx->tok[0] == '+');
+	end = parse_digits(digits, hi, out);
+	if (end == digits || *end != '\0')
 		return fail(lx, lx->tok_line, "expected %s (a whole number), got '%s'", what,
 			    lx->tok);
+	if (lx->tok[0] == '-')
+		*out = -*out;
 	if (limit && *out > hi)
 		return fail(lx, lx->tok_line,
 			    "%s %s is over the limit %s = %ld (raise it in src/config.h)", what,
 			    lx->tok, limit, hi);
-	if (errno == ERANGE || *out < lo || *out > hi)
+	if (*out < lo || *out > hi)
 		return fail(lx, lx->tok_line, "%s must be %ld to %ld, got %s", what, lo, hi,
 			    lx->tok);
 	return 1;

@@ -42,4 +42,10 @@ int parse_scene_buffer(scene *s, const char *name, const void *data, size_t size
  * comparisons). */
 int parse_keyword(const char *names, const char *word);
 
+/* Reads the decimal digits at the start of `text` into *out and returns the first byte
+ * after them (`text` itself when there are none). A value past `max` is held above it,
+ * not read on: `max` up to LONG_MAX / 10 - 1 (the capacities are far below). The scene's
+ * counts and the microcontroller's option values are read this way. */
+const char *parse_digits(const char *text, long max, long *out);
+
 #endif

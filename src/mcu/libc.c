@@ -1,22 +1,12 @@
 /* libc.c - the few C library functions rt calls, for a microcontroller with no C library
- * linked: memory and string helpers, strtol, and an integer-only printf core. Nothing
- * here allocates, and nothing buffers behind the caller's back.
+ * linked: memory and string helpers and an integer-only printf core. Nothing here
+ * allocates, and nothing buffers behind the caller's back.
  * See LICENSE for copyright and licence. */
-#include <errno.h>
 #include <limits.h>
 #include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
-
-/* newlib's errno.h makes errno a call to __errno(). */
-int *__errno(void);
-int *__errno(void)
-{
-	static int error_number;
-	return &error_number;
-}
 
 void *memset(void *dst, int c, size_t n)
 {
@@ -73,41 +63,6 @@ int strcmp(const char *a, const char *b)
 		b++;
 	}
 	return (unsigned char)*a - (unsigned char)*b;
-}
-
-/* Decimal only (base 10 is all rt asks for); ERANGE and LONG_MIN/MAX on overflow. */
-long strtol(const char *restrict text, char **restrict end, int base)
-{
-	const char *p = text;
-	unsigned long value = 0, cut;
-	unsigned cut_digit;
-	int negative = 0, digits = 0, overflow = 0;
-	(void)base;
-	while (*p == ' ' || (*p >= '\t' && *p <= '\r'))
-		p++;
-	if (*p == '-' || *p == '+')
-		negative = *p++ == '-';
-	/* The largest magnitude is cut * 10 + cut_digit: constants, so no division here. */
-	cut = negative ? ((unsigned long)LONG_MAX + 1u) / 10u : (unsigned long)LONG_MAX / 10u;
-	cut_digit = negative ? (unsigned)(((unsigned long)LONG_MAX + 1u) % 10u)
-			     : (unsigned)((unsigned long)LONG_MAX % 10u);
-	for (; *p >= '0' && *p <= '9'; p++, digits++) {
-		unsigned d = (unsigned)(*p - '0');
-		if (value > cut || (value == cut && d > cut_digit))
-			overflow = 1;
-		else
-			value = value * 10u + d;
-	}
-	/* strtol's contract hands back a non-const pointer into a const string. */
-	if (end)
-		*end = (char *)(uintptr_t)(digits ? p : text);
-	if (overflow) {
-		errno = ERANGE;
-		return negative ? LONG_MIN : LONG_MAX;
-	}
-	if (negative)
-		return value ? -(long)(value - 1u) - 1 : 0;
-	return (long)value;
 }
 
 /* ---- formatted output: just what rt's messages and headers use, %s (with a

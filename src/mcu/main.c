@@ -49,17 +49,13 @@ static int usage_error(const char *what, const char *arg)
 /* A decimal number in [1, max] ending at `stop`; *rest is after it. */
 static int read_int(const char *text, char stop, int max, int *out, const char **rest)
 {
-	long v = 0;
-	if (*text < '0' || *text > '9')
-		return 0;
-	for (; *text >= '0' && *text <= '9'; text++)
-		if ((v = v * 10 + (*text - '0')) > max)
-			return 0;
-	if (*text != stop || v < 1)
+	long v;
+	const char *end = parse_digits(text, max, &v);
+	if (end == text || *end != stop || v < 1 || v > max)
 		return 0;
 	*out = (int)v;
 	if (rest)
-		*rest = text + 1;
+		*rest = end + 1;
 	return 1;
 }
 
