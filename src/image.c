@@ -81,18 +81,32 @@ void image_encode_row(const vec3 *colors, int count, unsigned char *bytes)
 	}
 }
 
-int ppm_write_header(write_fn write, void *ctx, int width, int height)
+/* The header of a binary PPM (P6) or PGM (P5) with samples up to maxval: one format for
+ * both sinks. */
+static int write_pnm_header(write_fn write, void *ctx, int magic, int width, int height,
+			    long maxval)
 {
 	char header[64];
-	int n = snprintf(header, sizeof header, "P6\n%d %d\n255\n", width, height);
+	int n = snprintf(header, sizeof header, "P%d\n%d %d\n%ld\n", magic, width, height,
+			 maxval);
 	return n > 0 && write(ctx, header, (size_t)n);
 }
 
-static int ppm_begin(sink *self, int width, int height)
+int ppm_write_header(write_fn write, void *ctx, int width, int height)
 {
-	ppm_sink *p = (ppm_sink *)self;
-	p->width = width;
-	return ppm_write_header(self->write, self->ctx, width, height);
+	return write_pnm_header(write, ctx, 6, width, height, 255);
+}
+
+static int ids_row(sink *self, const vec3 *colors, const int *ids);
+
+/* Both sinks begin alike: the width for the rows, then the header, a PGM of 16-bit IDs
+ * for the ID sink (the one whose rows are ids_row), else a PPM. */
+static int pnm_begin(sink *self, int width, int height)
+{
+	int ids = self->row == ids_row;
+	((ppm_sink *)self)->width = width;
+	return write_pnm_header(self->write, self->ctx, ids ? 5 : 6, width, height,
+				ids ? 65535 : 255);
 }
 
 static int ppm_row(sink *self, const vec3 *colors, const int *ids)
@@ -112,16 +126,8 @@ static int ppm_end(sink *self)
 
 void ppm_sink_init(ppm_sink *p, write_fn write, void *ctx)
 {
-	sink_init(&p->base, ppm_begin, ppm_row, ppm_end, write, ctx);
+	sink_init(&p->base, pnm_begin, ppm_row, ppm_end, write, ctx);
 	p->width = 0;
-}
-
-static int ids_begin(sink *self, int width, int height)
-{
-	char header[64];
-	int n = snprintf(header, sizeof header, "P5\n%d %d\n65535\n", width, height);
-	((ids_sink *)self)->width = width;
-	return n > 0 && self->write(self->ctx, header, (size_t)n);
 }
 
 static int ids_row(sink *self, const vec3 *colors, const int *ids)
@@ -141,6 +147,5 @@ static int ids_row(sink *self, const vec3 *colors, const int *ids)
 void ids_sink_init(ids_sink *p, write_fn write, void *ctx)
 {
 	ppm_sink_init(p, write, ctx);
-	p->base.begin = ids_begin;
 	p->base.row = ids_row;
 }
