@@ -292,9 +292,9 @@ int32_t fixed_tan_degrees(int32_t degrees)
 int32_t fixed_parse(const char *s, const char **end, int shift, int *overflow)
 {
 	const char *p = s;
-	uint64_t mantissa = 0;
+	uint64_t mantissa = 0, room;
 	int64_t result, denominator = 1;
-	int negative = 0, digits = 0, exponent = 0, binary = 16 + shift, point = 0;
+	int negative = 0, digits = 0, exponent = 0, binary = 16 + shift, point = 0, up;
 	*overflow = 0;
 	if (*p == '+' || *p == '-')
 		negative = *p++ == '-';
@@ -335,7 +335,11 @@ int32_t fixed_parse(const char *s, const char **end, int shift, int *overflow)
 	*end = p;
 	if (mantissa == 0)
 		return 0;
-	/* value = mantissa * 10^exponent * 2^binary, kept within 63 bits throughout. */
+	/* value = mantissa * 10^exponent * 2^binary, kept within 63 bits throughout: the
+	 * mantissa is shifted up by a positive binary (below `room` it fits), the
+	 * denominator by a negative one. */
+	up = binary > 0 ? binary : 0;
+	room = (uint64_t)1 << (62 - up);
 	for (; exponent > 0; exponent--) {
 		if (mantissa > UINT64_MAX / 20) {
 			*overflow = 1;
@@ -343,21 +347,17 @@ int32_t fixed_parse(const char *s, const char **end, int shift, int *overflow)
 		}
 		mantissa *= 10;
 	}
-	while (exponent < -18 || (binary > 0 && mantissa >= ((uint64_t)1 << (62 - binary)))) {
+	while (exponent < -18 || (binary > 0 && mantissa >= room)) {
 		mantissa = fixed_udiv64(mantissa + 5, 10);
 		exponent++;
 	}
 	for (; exponent < 0; exponent++)
 		denominator *= 10;
-	if (binary >= 0) {
-		if (mantissa >= ((uint64_t)1 << (62 - binary))) {
-			*overflow = 1;
-			return 0;
-		}
-		result = fixed_round_div((int64_t)(mantissa << binary), denominator);
-	} else {
-		result = fixed_round_div((int64_t)mantissa, denominator << -binary);
+	if (binary >= 0 && mantissa >= room) {
+		*overflow = 1;
+		return 0;
 	}
+	result = fixed_round_div((int64_t)(mantissa << up), denominator << (up - binary));
 	if (result > INT32_MAX) {
 		*overflow = 1;
 		return 0;
