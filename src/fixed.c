@@ -389,10 +389,20 @@ int fixed_from_text(const char *text, int shift, int32_t *out)
 
 int32_t fixed_ldexp(int32_t x, int e)
 {
-	if (e >= 0)
-		return fixed_saturate(e > 31 ? (x ? (x > 0 ? INT32_MAX : -INT32_MAX) : 0)
-					     : (int64_t)x * ((int64_t)1 << e));
-	return e < -31 ? 0 : (int32_t)(((int64_t)x + ((int64_t)1 << (-e - 1))) >> -e);
+	/* In 32 bits (64-bit shifts are library calls on small cores). Up: the magnitude,
+	 * saturated when it has more bits than the shift leaves room for (any shift past 31
+	 * acts as 31 does: 0 stays 0, the rest saturates). */
+	if (e >= 0) {
+		uint32_t m = x < 0 ? 0u - (uint32_t)x : (uint32_t)x;
+		e = e > 31 ? 31 : e;
+		m = m > ((uint32_t)INT32_MAX >> e) ? (uint32_t)INT32_MAX : m << e;
+		return x < 0 ? -(int32_t)m : (int32_t)m;
+	}
+	/* Down, rounding half up: floor(x / 2^k + 1/2) is the floor of x / 2^k plus the bit
+	 * below it (x + 2^(k - 1) itself could overflow). */
+	if (e < -31)
+		return 0;
+	return (x >> -e) + ((x >> (-e - 1)) & 1);
 }
 
 int fixed_length_shift(int32_t extent, int measured_shift)
