@@ -173,36 +173,33 @@ static int next_value(lexer *lx, const char *what, int whole)
 		return 1;
 	if (lx->failed)
 		return 0;
-	return fail(lx, lx->tok_line,
-		    whole ? "unexpected end of file (expected %s)"
-			  : "unexpected end of file (expected a number (%s))",
-		    what);
+	return fail(lx, lx->tok_line, "unexpected end of file (expected %s%s%s)",
+		    whole ? "" : "a number (", what, whole ? "" : ")");
 }
 
 /* Reads one finite number; a length (or a position) is read times the scene's length
  * scale, 2^length_shift, and counts towards the longest one. */
 static int read_value(lexer *lx, const char *what, int length, real *out)
 {
-	int shift = length ? lx->length_shift : 0;
+	/* One format for the three ways a token can fail: the end of the message for each
+	 * status from REAL_TEXT_NOT_A_NUMBER on, and the range named only for a number out of
+	 * it. */
+	static const char *const why[] = {"", " (not a finite number)", " (out of range)"};
+	int shift = length ? lx->length_shift : 0, status, out_of_range;
 	*out = REAL_C(0.0); /* defined even on failure (static analysis cannot see through fail) */
 	if (!next_value(lx, what, 0))
 		return 0;
-	switch (real_from_text(lx->tok, shift, out)) {
-	case REAL_TEXT_OK:
+	status = real_from_text(lx->tok, shift, out);
+	if (status == REAL_TEXT_OK) {
 		if (length)
 			lx->longest = real_max(lx->longest, real_fabs(*out));
 		return 1;
-	case REAL_TEXT_NOT_A_NUMBER:
-		return fail(lx, lx->tok_line, "expected a number (%s), got '%s'", what, lx->tok);
-	case REAL_TEXT_NOT_FINITE:
-		/* Underflow to a tiny value is harmless; overflow, NaN and infinity are not. */
-		return fail(lx, lx->tok_line,
-			    "expected a number (%s), got '%s' (not a finite number)", what, lx->tok);
-	default:
-		return fail(lx, lx->tok_line,
-			    "expected a number (%s) within %s, got '%s' (out of range)", what,
-			    REAL_RANGE_TEXT, lx->tok);
 	}
+	/* Underflow to a tiny value is harmless; overflow, NaN and infinity are not. */
+	out_of_range = status == REAL_TEXT_OUT_OF_RANGE;
+	return fail(lx, lx->tok_line, "expected a number (%s)%s%s, got '%s'%s", what,
+		    out_of_range ? " within " : "", out_of_range ? REAL_RANGE_TEXT : "", lx->tok,
+		    why[status - REAL_TEXT_NOT_A_NUMBER]);
 }
 
 /* Three numbers: a point (length = 1: lengths) or a direction or colour (length = 0). */
