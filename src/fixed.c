@@ -410,12 +410,12 @@ int fixed_length_shift(int32_t extent, int measured_shift)
 	/* At most 4096 (2^12): squares, ray lengths across the scene and their sums keep
 	 * headroom in Q16.16 and Q32.32; at least 2048, to use the bits there are. */
 	int s = measured_shift;
-	int64_t e = extent > 0 ? extent : 1;
-	while (e > (int64_t)4096 * 65536) {
+	int32_t e = extent > 0 ? extent : 1; /* doubled only while at most 2^27: 32 bits */
+	while (e > (int32_t)4096 * 65536) {
 		e >>= 1;
 		s--;
 	}
-	while (e <= (int64_t)2048 * 65536 && s < 16) {
+	while (e <= (int32_t)2048 * 65536 && s < 16) {
 		e <<= 1;
 		s++;
 	}
@@ -430,7 +430,8 @@ int fixed_can_represent(int32_t extent, int32_t feature, const char **why)
 	 * SPD shells (ratio 28,600) hits another object in 0.03 % of its pixels, SPD tree at
 	 * its default size (49,140) in 3.1 %. */
 	*why = NULL;
-	if (feature > 0 && (int64_t)feature * 32768 < extent) {
+	/* In 32 bits: from 65536 on, feature * 32768 is past any extent. */
+	if (feature > 0 && feature < 65536 && feature * 32768 < extent) {
 		*why = "the ratio of its extent to its smallest feature is over 32768";
 		return 0;
 	}
