@@ -320,7 +320,7 @@ static int intern_material(parser *p, const material *m, int line)
 }
 
 /* A new object slot with the current material (white diffuse before any `f`), for the
- * entity on `line`. */
+ * entity on `line`. It is counted at once: its entity sets it up and cannot fail after. */
 static object *new_object(parser *p, unsigned char kind, int line)
 {
 	scene *s = p->s;
@@ -339,7 +339,7 @@ static object *new_object(parser *p, unsigned char kind, int line)
 		capacity_error(p, line, "objects", "RT_MAX_OBJECTS", RT_MAX_OBJECTS);
 		return NULL;
 	}
-	o = &s->objects[s->object_count];
+	o = &s->objects[s->object_count++];
 	memset(o, 0, sizeof *o);
 	o->kind = kind;
 	o->material = (unsigned short)p->material;
@@ -518,7 +518,6 @@ static int parse_sphere(parser *p)
 	o->u.sphere.center = center;
 	o->u.sphere.radius = radius;
 	o->u.sphere.radius2 = real_mul2(radius, radius);
-	p->s->object_count++;
 	return 1;
 }
 
@@ -631,7 +630,6 @@ static int parse_polygon(parser *p, int patch)
 		}
 	}
 	s->vertex_count += (int)count;
-	s->object_count++;
 	return 1;
 }
 
@@ -681,7 +679,6 @@ static int parse_cone(parser *p)
 	o->u.cone.base_radius = base_radius;
 	o->u.cone.apex_radius = apex_radius;
 	o->u.cone.slope = real_div(apex_radius - base_radius, length);
-	p->s->object_count++;
 	return 1;
 }
 #endif
@@ -728,7 +725,6 @@ static int parse_hedron(parser *p)
 		return 0;
 	o->u.hedron.first = first;
 	o->u.hedron.count = (int)count;
-	p->s->object_count++;
 	return 1;
 }
 
@@ -761,7 +757,6 @@ static int parse_box(parser *p)
 		return 0;
 	o->u.hedron.first = first;
 	o->u.hedron.count = 6;
-	p->s->object_count++;
 	return 1;
 }
 
@@ -781,7 +776,6 @@ static int parse_plane(parser *p)
 		return 0;
 	o->u.plane.normal = dir_normalize(normal);
 	o->u.plane.offset = dir_dot_vec(o->u.plane.normal, point);
-	p->s->object_count++;
 	return 1;
 }
 
