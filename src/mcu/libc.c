@@ -81,13 +81,6 @@ static void put(out_buf *o, char c)
 	o->used++;
 }
 
-/* Place values of the digits: decimal, then hexadecimal's (after the first 10). */
-static const unsigned long places[] = {1000000000ul, 100000000ul, 10000000ul, 1000000ul,
-				       100000ul,     10000ul,     1000ul,     100ul,
-				       10ul,         1ul,         0x10000000ul, 0x1000000ul,
-				       0x100000ul,   0x10000ul,   0x1000ul,   0x100ul,
-				       0x10ul,       1ul};
-
 int vsnprintf(char *restrict buf, size_t size, const char *restrict fmt, va_list ap)
 {
 	out_buf o;
@@ -95,9 +88,9 @@ int vsnprintf(char *restrict buf, size_t size, const char *restrict fmt, va_list
 	o.size = size;
 	o.used = 0;
 	for (; *fmt; fmt++) {
-		char digits[12], pad = ' ';
-		int width = 0, precision = -1, is_long = 0, n = 0, i, last;
-		unsigned long u;
+		char digits[12], *d, pad = ' ';
+		int width = 0, precision = -1, is_long = 0, n = 0, i;
+		uint32_t u, base = 10;
 		const char *s = digits;
 		if (*fmt != '%') {
 			put(&o, *fmt);
@@ -119,29 +112,30 @@ int vsnprintf(char *restrict buf, size_t size, const char *restrict fmt, va_list
 			while (s[n] && (precision < 0 || n < precision))
 				n++;
 		} else if (*fmt == 'd' || *fmt == 'u' || *fmt == 'X') {
+			/* long is 32 bits here, as int is. */
 			if (*fmt == 'd') {
 				long v = is_long ? va_arg(ap, long) : va_arg(ap, int);
 				if (v < 0) {
 					put(&o, '-');
 					width--;
 				}
-				u = v < 0 ? 0u - (unsigned long)v : (unsigned long)v;
+				u = v < 0 ? 0u - (uint32_t)v : (uint32_t)v;
 			} else {
 				u = is_long ? va_arg(ap, unsigned long) : va_arg(ap, unsigned);
+				base = *fmt == 'X' ? 16 : 10;
 			}
-			/* Each digit by counting down its place value: the M0 has no divide,
-			 * and the library's would cost flash. Leading zeros are left out. */
-			i = *fmt == 'X' ? 10 : 0;
-			last = *fmt == 'X' ? 17 : 9;
-			for (; i <= last; i++) {
-				int d = 0;
-				while (u >= places[i]) {
-					u -= places[i];
-					d++;
-				}
-				if (d || n || i == last)
-					digits[n++] = "0123456789ABCDEF"[d];
-			}
+			/* The digits from the last one back. The M0 has no divide, and the
+			 * library's would cost flash: u / 10 is the top of u times 2^35 / 10,
+			 * rounded up (exact for every 32-bit u). */
+			d = digits + sizeof digits;
+			do {
+				uint32_t q = base == 16 ? u >> 4
+						       : (uint32_t)(((uint64_t)u * 0xCCCCCCCDu) >> 35);
+				*--d = "0123456789ABCDEF"[u - q * base];
+				u = q;
+				n++;
+			} while (u);
+			s = d;
 		} else {
 			/* %% and anything unknown print as themselves */
 			put(&o, *fmt ? *fmt : '%');
