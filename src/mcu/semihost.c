@@ -4,6 +4,7 @@
 #include "semihost.h"
 
 #include <stdint.h>
+#include <string.h>
 
 enum {
 	SYS_OPEN = 0x01,
@@ -25,20 +26,12 @@ static int call(int op, void *args)
 	return r0;
 }
 
-static size_t length(const char *s)
-{
-	size_t n = 0;
-	while (s[n])
-		n++;
-	return n;
-}
-
 int semihost_open(const char *name, int mode)
 {
 	uintptr_t args[3];
 	args[0] = (uintptr_t)name;
 	args[1] = (uintptr_t)mode;
-	args[2] = length(name);
+	args[2] = strlen(name);
 	return call(SYS_OPEN, args);
 }
 

@@ -2,6 +2,8 @@
  * through semihosting, standard output buffered, messages to standard error. The host
  * build has its own (src/stdio_io.c).
  * See LICENSE for copyright and licence. */
+#include <string.h>
+
 #include "diag.h"
 #include "mcu.h"
 #include "parse.h"
@@ -34,9 +36,8 @@ int mcu_stdout_write(void *ctx, const void *data, size_t n)
 	const unsigned char *bytes = data;
 	(void)ctx;
 	while (n > 0) {
-		size_t room = OUTPUT_CHUNK - output_used, k = n < room ? n : room, i;
-		for (i = 0; i < k; i++)
-			output[output_used + i] = bytes[i];
+		size_t room = OUTPUT_CHUNK - output_used, k = n < room ? n : room;
+		memcpy(output + output_used, bytes, k);
 		output_used += k;
 		bytes += k;
 		n -= k;
@@ -48,10 +49,7 @@ int mcu_stdout_write(void *ctx, const void *data, size_t n)
 
 void mcu_stderr(const char *text)
 {
-	size_t n = 0;
-	while (text[n])
-		n++;
-	semihost_write(standard_stream(&stderr_handle, SEMIHOST_APPEND), text, n);
+	semihost_write(standard_stream(&stderr_handle, SEMIHOST_APPEND), text, strlen(text));
 }
 
 void diag_standard_error(void *ctx, const char *message)
