@@ -272,15 +272,16 @@ int32_t fixed_tan_degrees(int32_t degrees)
 	/* sin and cos by their nested Taylor series in Q4.28 (x^2 reaches 2.47 at pi/2);
 	 * degrees < 90 keep the product below 2^61. */
 	int64_t t = fixed_round_div((int64_t)degrees * RADIANS_PER_DEGREE_Q44, INT64_C(1) << 32);
-	int64_t t2 = t * t >> 28, s = (int64_t)1 << 28, c = (int64_t)1 << 28;
+	int64_t t2 = t * t >> 28, series[2], s, c;
 	int k;
-	/* Both series in one loop (one copy of its 64-bit arithmetic): the odd k are the
-	 * sine's terms (15 to 3), the even k the cosine's (16 to 2). */
-	for (k = 16; k >= 2; k--) {
-		int64_t *sum = k & 1 ? &s : &c;
-		*sum = ((int64_t)1 << 28) - fixed_div64(t2 * *sum >> 28, k * (k - 1));
-	}
-	s = t * s >> 28;
+	/* Both series in one loop (one copy of its 64-bit arithmetic): series[k & 1], the
+	 * cosine's for the even k (16 to 2), the sine's for the odd k (15 to 3). */
+	series[0] = series[1] = (int64_t)1 << 28;
+	for (k = 16; k >= 2; k--)
+		series[k & 1] = ((int64_t)1 << 28) -
+				fixed_div64(t2 * series[k & 1] >> 28, k * (k - 1));
+	s = t * series[1] >> 28;
+	c = series[0];
 	if (c <= 0)
 		return FIXED_MAX;
 	return fixed_saturate(fixed_round_div(s * 65536, c));
@@ -398,11 +399,12 @@ int32_t fixed_ldexp(int32_t x, int e)
 		m = m > ((uint32_t)INT32_MAX >> e) ? (uint32_t)INT32_MAX : m << e;
 		return x < 0 ? -(int32_t)m : (int32_t)m;
 	}
-	/* Down, rounding half up: floor(x / 2^k + 1/2) is the floor of x / 2^k plus the bit
-	 * below it (x + 2^(k - 1) itself could overflow). */
+	/* Down by k = -e, rounding half up: floor(x / 2^k + 1/2) is the floor of x / 2^k plus
+	 * the bit below it (x + 2^(k - 1) itself could overflow), both from x / 2^(k - 1). */
 	if (e < -31)
 		return 0;
-	return (x >> -e) + ((x >> (-e - 1)) & 1);
+	x >>= -e - 1;
+	return (x >> 1) + (x & 1);
 }
 
 int fixed_length_shift(int32_t extent, int measured_shift)
