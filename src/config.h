@@ -60,6 +60,13 @@
 #define RT_SHAPE_CONE 1
 #endif
 
+/* Patches (NFF `pp`: polygons shaded by their vertex normals); 0 leaves them out, for a
+ * small target whose flash and RAM are short (the vertex normals' pool goes too; a scene
+ * with a patch is then refused, naming this switch). */
+#ifndef RT_SHAPE_PATCH
+#define RT_SHAPE_PATCH 1
+#endif
+
 /* The ANSI colour previews; 0 leaves them out (ASCII only) where flash is short. */
 #ifndef RT_PREVIEW_COLOR
 #define RT_PREVIEW_COLOR 1

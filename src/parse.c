@@ -585,6 +585,7 @@ static int parse_polygon(parser *p, int patch)
 		if (!read_triple(&p->lx, patch ? "patch vertex" : "polygon vertex", 1,
 			      &s->vertices[first + i]))
 			return 0;
+#if RT_SHAPE_PATCH
 		if (patch) {
 			/* Normalised as read; a zero one stays zero until the face's is known. */
 			vec3 n;
@@ -592,6 +593,7 @@ static int parse_polygon(parser *p, int patch)
 				return 0;
 			s->normals[first + i] = dir_normalize(n);
 		}
+#endif
 	}
 	normal = newell_normal(s->vertices + first, (int)count);
 	if (!(dir_dot(normal, normal) > 0)) {
@@ -622,6 +624,7 @@ static int parse_polygon(parser *p, int patch)
 			     : (unit_fabs(poly->normal.y) > unit_fabs(poly->normal.z) ? 1 : 2);
 	for (i = 0; i < count; i++)
 		s->projected[first + i] = polygon_project(s->vertices[first + i], poly->axis);
+#if RT_SHAPE_PATCH
 	if (patch) {
 		/* A zero vertex normal falls back to the face normal. */
 		for (i = 0; i < count; i++) {
@@ -629,6 +632,7 @@ static int parse_polygon(parser *p, int patch)
 			*n = dir_dot(*n, *n) > 0 ? *n : poly->normal;
 		}
 	}
+#endif
 	s->vertex_count += (int)count;
 	return 1;
 }
@@ -871,7 +875,12 @@ static int parse_entity(parser *p)
 	case CMD_POLYGON:
 		return parse_polygon(p, 0);
 	case CMD_PATCH:
+#if RT_SHAPE_PATCH
 		return parse_polygon(p, 1);
+#else
+		return fail(&p->lx, p->lx.tok_line,
+			    "patches are left out of this build (RT_SHAPE_PATCH)");
+#endif
 	case CMD_CONE:
 #if RT_SHAPE_CONE
 		return parse_cone(p);

@@ -58,29 +58,36 @@ int polygon_contains(const vec3 *vertices, int count, int axis, real pu, real pv
 	return polygon_contains_2d(uv, count, pu, pv);
 }
 
-/* Signed area weight of triangle (a, b, c) about the unit plane normal n: products of
- * two lengths, so a real2. */
-static real2 area_along(dir3 normal, vec3 a, vec3 b, vec3 c)
+#if RT_SHAPE_PATCH
+/* Twice the signed area of triangle (a, b, c) in the polygon's projection: a product of
+ * two lengths, so a real2, exact in fixed point. */
+static real2 area_2d(vec2 a, vec2 b, vec2 c)
 {
-	vec3 e = vec_sub(b, a), f = vec_sub(c, a), n = dir_to_vec(normal);
-	return real2_scale(real_mul2(e.y, f.z) - real_mul2(e.z, f.y), n.x) +
-	       real2_scale(real_mul2(e.z, f.x) - real_mul2(e.x, f.z), n.y) +
-	       real2_scale(real_mul2(e.x, f.y) - real_mul2(e.y, f.x), n.z);
+	return real_mul2(b.u - a.u, c.v - a.v) - real_mul2(b.v - a.v, c.u - a.u);
 }
 
 /* Shading normal of a patch at p: barycentric interpolation of the vertex normals in
- * the fan triangle (0, i, i+1) that holds p (SPD patches are all triangles). */
+ * the fan triangle (0, i, i+1) that holds p (SPD patches are all triangles). The weights
+ * are ratios of areas, which the projection that drops the normal's largest axis scales
+ * all alike (by that component, at least 1/sqrt(3)): they are taken there, from the
+ * projected vertices the inside test uses, in two products each rather than the six
+ * and three scalings of areas along the normal in 3D. */
 static dir3 patch_normal(const scene *s, const polygon_shape *poly, vec3 p)
 {
-	const vec3 *v = s->vertices + poly->first;
+	const vec2 *uv = s->projected + poly->first;
 	const dir3 *vn = s->normals + poly->first;
+	vec2 q = polygon_project(p, poly->axis);
 	int i;
 	for (i = 1; i + 1 < poly->count; i++) {
-		real2 whole = area_along(poly->normal, v[0], v[i], v[i + 1]);
-		real2 a0 = area_along(poly->normal, p, v[i], v[i + 1]);
-		real2 a1 = area_along(poly->normal, v[0], p, v[i + 1]);
+		real2 whole = area_2d(uv[0], uv[i], uv[i + 1]);
+		real2 a0 = area_2d(q, uv[i], uv[i + 1]);
+		real2 a1 = area_2d(uv[0], q, uv[i + 1]);
 		real2 a2 = whole - a0 - a1;
-		if (whole != 0 && ((a0 >= 0 && a1 >= 0 && a2 >= 0) || i + 2 == poly->count)) {
+		/* The projection may mirror the polygon: the signs that count are those
+		 * relative to the whole triangle's. */
+		int sense = whole < 0 ? -1 : 1;
+		if (whole != 0 && ((a0 * sense >= 0 && a1 * sense >= 0 && a2 * sense >= 0) ||
+				   i + 2 == poly->count)) {
 			/* Barycentric weights: each area over the whole. */
 			vec3 n = vec_scale(dir_to_vec(vn[0]), real2_ratio(a0, whole));
 			dir3 unit_n;
@@ -92,6 +99,7 @@ static dir3 patch_normal(const scene *s, const polygon_shape *poly, vec3 p)
 	}
 	return poly->normal;
 }
+#endif
 
 int polygon_intersect(const scene *s, const object *o, const ray *r, real tmin, real tmax,
 		      hit *h)
@@ -130,7 +138,11 @@ int polygon_intersect(const scene *s, const object *o, const ray *r, real tmin, 
 		h->t = t;
 		h->point = p;
 		h->normal = poly->normal;
+#if RT_SHAPE_PATCH
 		h->shading = o->kind == SHAPE_PATCH ? patch_normal(s, poly, p) : poly->normal;
+#else
+		h->shading = poly->normal;
+#endif
 	}
 	return 1;
 }

@@ -127,7 +127,9 @@ typedef struct {
 	light lights[RT_MAX_LIGHTS];
 	object objects[RT_MAX_OBJECTS];
 	vec3 vertices[RT_MAX_VERTICES];
+#if RT_SHAPE_PATCH
 	dir3 normals[RT_MAX_VERTICES];
+#endif
 	vec2 projected[RT_MAX_VERTICES]; /* vertices projected for the point-in-polygon test */
 	halfspace planes[RT_MAX_PLANES];
 

@@ -91,10 +91,16 @@ for cpu in m0 m3; do
 	status=$?
 	check "$cpu: glass.nff: status $status, not 1" [ "$status" -eq 1 ]
 	check "$cpu: glass.nff: no capacity named" grep -q 'RT_MAX_[A-Z]* = ' "$tmp/mcu.err"
-	# Cones are left out of the M0-sized build (RT_SHAPE_CONE=0): refused by name.
+	# Cones and patches are left out of the M0-sized build (RT_SHAPE_CONE=0,
+	# RT_SHAPE_PATCH=0): refused by name.
 	run_mcu "$board" "$elf" "$tmp/mcu.out" "$tmp/mcu.err" scenes/cones.nff
 	check "$cpu: cones.nff: status not 1" [ $? -eq 1 ]
 	check "$cpu: cones.nff: the switch is not named" grep -q 'RT_SHAPE_CONE' "$tmp/mcu.err"
+	printf 'v\nfrom 0 -5 0\nat 0 0 0\nup 0 0 1\nangle 40\nhither 0.1\nresolution 8 8\n%s\n' \
+		'pp 3 0 0 0 0 -1 0 1 0 0 0 -1 0 0 1 0 -1 0' >"$tmp/patch.nff"
+	run_mcu "$board" "$elf" "$tmp/mcu.out" "$tmp/mcu.err" "$tmp/patch.nff"
+	check "$cpu: a patch: status not 1" [ $? -eq 1 ]
+	check "$cpu: a patch: the switch is not named" grep -q 'RT_SHAPE_PATCH' "$tmp/mcu.err"
 	run_mcu "$board" "$elf" "$tmp/mcu.out" "$tmp/mcu.err" scenes/mcu-demo.nff --rows
 	check "$cpu: a usage error gives status 2" [ $? -eq 2 ]
 	run_mcu "$board" "$elf" "$tmp/mcu.out" "$tmp/mcu.err" no-such-file.nff
