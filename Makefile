@@ -227,6 +227,17 @@ build/mcu/rt-%.elf: $(MCU_SRC) $(wildcard src/*.h src/mcu/*.h) build/mcu/%/libc.
 
 mcu: build/mcu/rt-m0.elf build/mcu/rt-m3.elf
 
+# The fixed-point kernels' unit tests on each board (tests/mcu/kernels.c): fixed.h's
+# Thumb-1 assembly is compiled only there. Not optimised as one unit: only the kernels
+# and their tests are in it.
+MCU_KERNEL_SRC = tests/mcu/kernels.c tests/test_fixed.c src/fixed.c src/mcu/startup.c \
+	src/mcu/semihost.c
+build/mcu/kernels-%.elf: $(MCU_KERNEL_SRC) src/fixed.h tests/test.h build/mcu/%/libc.o \
+		src/mcu/sections.ld src/mcu/$$(MCU_BOARD_$$*).ld
+	$(MCU_CC) $(MCU_CFLAGS) -Itests -mcpu=$(MCU_CPU_$*) -nostdlib -nostartfiles \
+		-Wl,--gc-sections -Lsrc/mcu -T $(MCU_BOARD_$*).ld -o $@ $(MCU_KERNEL_SRC) \
+		build/mcu/$*/libc.o -lgcc
+
 # The instruction-counting qemu plugin (tools/mcu-cost), built for the host.
 build/mcu/insncount.so: tools/mcu/insncount.c
 	@mkdir -p $(@D)
@@ -240,7 +251,8 @@ build/rt-fixed-mcu: $(SRC) $(wildcard src/*.h)
 		-o $@ $(SRC) $(LDLIBS) $(RT_LDLIBS)
 
 # qemu-system-arm is installed from Debian's packages when missing.
-mcu-ready: mcu mcu-builtin build/rt-fixed build/rt-fixed-mcu
+mcu-ready: mcu mcu-builtin build/mcu/kernels-m0.elf build/mcu/kernels-m3.elf build/rt-fixed \
+		build/rt-fixed-mcu
 	@command -v qemu-system-arm >/dev/null || { apt-get update && apt-get install -y qemu-system-arm; }
 # The cross compiler and the C headers it needs, likewise.
 mcu-tools:

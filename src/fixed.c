@@ -94,9 +94,10 @@ int32_t fixed_sqrt30(int32_t u)
 /* 1/sqrt(w) as a fixed_reciprocal, without a square root or a division: w = t 4^k with t
  * in [1/4, 1), so 2^(30 + k) / sqrt(w) = 2^30 y for y = 1/sqrt(t) in (1, 2], which Newton's
  * y (3 - t y^2) / 2 refines from a table of 24 starting values (good to 2^-5) in three
- * steps (2^-9, 2^-18, then the 2^-30 that 32-bit products keep). Each step is three
- * 32 x 32 -> 64 products (the first one narrower); dividing by a rounded root was a root
- * and a division. */
+ * steps (2^-9, 2^-17, then the 2^-30 that 32-bit products keep). Each step is three
+ * products; the first two take y's top bits, so that each product is two 16 x 16 ones
+ * (on the M0 a full 32 x 32 -> 64 product is four, and a sum of carries). Dividing by a
+ * rounded root was a root and a division. */
 static uint32_t sqrt_mantissa(uint64_t w, int k)
 {
 	/* t = w / 4^k in Q0.32 (w's top 30 to 32 bits), from w's 32-bit halves: a 64-bit
@@ -118,7 +119,7 @@ fixed_reciprocal fixed_reciprocal_sqrt2(int64_t w)
 	    * index 32 t (the first 8 are never read: t >= 1/4) */
 	fixed_reciprocal r;
 	uint32_t t, y, low, high, ty;
-	int k, i;
+	int k;
 	r.negative = 0;
 	if (w <= 0) { /* as fixed_reciprocal_of(0): quotients saturate */
 		r.scale = 0;
@@ -137,13 +138,21 @@ fixed_reciprocal fixed_reciprocal_sqrt2(int64_t w)
 	ty = ((ty >> 16) * y << 8) + ((ty & 0xFFFFu) * y >> 8);   /* t y^2 in Q2.30 */
 	ty = 0xC0000000u - ty;                                    /* 3 - t y^2 */
 	y = ((ty >> 16) * y << 7) + ((ty & 0xFFFFu) * y >> 9);    /* y (3 - t y^2) / 2 */
-	for (i = 0; i < 2; i++) {
-		fixed_umul64_parts(t, y, &low, &ty);    /* t y in Q2.30 */
-		fixed_umul64_parts(ty, y, &low, &high); /* t y^2 in Q4.60 */
-		/* 3 - t y^2 in Q2.30 (t y^2 is within 2^-4 of 1 from the first step on). */
-		fixed_umul64_parts(y, 0xC0000000u - ((high << 2) | (low >> 30)), &low, &high);
-		y = (high << 1) | (low >> 31); /* y (3 - t y^2) / 2 in Q2.30 */
-	}
+	/* The second step from y's top 16 bits (y15 = y in Q1.15, at most 2^16): again two
+	 * 16 x 16 products each, and good to 2^-17 (Newton squares the 2^-9 error; the 2^-15
+	 * y15 drops is corrected with it). t y and the correction are below 2^31 (t y = 1/y
+	 * is below 1), so no product passes 32 bits. */
+	y >>= 15;
+	ty = (t >> 16) * y + ((t & 0xFFFFu) * y >> 16);            /* t y in Q1.31 */
+	ty = (ty >> 16) * y + ((ty & 0xFFFFu) * y >> 16);          /* t y^2 in Q2.30 */
+	ty = 0xC0000000u - ty;                                     /* 3 - t y^2 */
+	y = (ty >> 16) * y + ((ty & 0xFFFFu) * y >> 16);           /* y (3 - t y^2) / 2 */
+	/* The last step in full 32 x 32 -> 64 products: 2^-34, below what Q2.30 keeps. */
+	fixed_umul64_parts(t, y, &low, &ty);    /* t y in Q2.30 */
+	fixed_umul64_parts(ty, y, &low, &high); /* t y^2 in Q4.60 */
+	/* 3 - t y^2 in Q2.30 (t y^2 is within 2^-16 of 1 here). */
+	fixed_umul64_parts(y, 0xC0000000u - ((high << 2) | (low >> 30)), &low, &high);
+	y = (high << 1) | (low >> 31); /* y (3 - t y^2) / 2 in Q2.30 */
 	r.scale = y;
 	r.shift = 14 + k;
 	return r;

@@ -78,12 +78,38 @@ static inline uint64_t fixed_umul64_narrow(uint32_t a, uint32_t b)
 #define FIXED_PARTS static inline
 #endif
 
-/* fixed_saturate((int64_t)a + b) in 32-bit arithmetic: the overflow test first. */
+/* fixed_saturate((int64_t)a + b) in 32-bit arithmetic: the overflow test first. On the
+ * M0 the add's own overflow flag tells it, and a sum of exactly -2^31 (no overflow, but
+ * outside the range) is the one other case: two instructions more, where the C test is
+ * six (vector sums are most of its uses). */
 FIXED_PARTS int32_t fixed_add(int32_t a, int32_t b)
 {
+#if FIXED_ASM
+	int32_t sum, sign;
+	__asm__(".syntax unified\n\t"
+		"adds %[sum], %[a], %[b]\n\t"
+		"bvs 1f\n\t"
+		"subs %[sign], %[sum], #1\n\t" /* overflows for sum = -2^31 only */
+		"bvc 2f\n\t"
+		"adds %[sum], #1\n\t" /* -2^31 + 1 = -INT32_MAX */
+		"b 2f\n"
+		"1:\n\t"
+		"asrs %[sign], %[b], #31\n\t" /* the exact sum's sign: 0 or -1 */
+		"movs %[sum], #1\n\t"
+		"lsls %[sum], %[sum], #31\n\t"
+		"subs %[sum], #1\n\t"            /* INT32_MAX */
+		"eors %[sum], %[sign]\n\t"       /* or -2^31 */
+		"subs %[sum], %[sum], %[sign]\n" /* or -2^31 + 1 */
+		"2:"
+		: [sum] "=&l"(sum), [sign] "=&l"(sign)
+		: [a] "l"(a), [b] "l"(b)
+		: "cc");
+	return sum;
+#else
 	if (b > 0 ? a > INT32_MAX - b : a < -INT32_MAX - b)
 		return b > 0 ? INT32_MAX : -INT32_MAX;
 	return a + b;
+#endif
 }
 
 /* |a|, saturating (a few instructions: inline everywhere). */
@@ -421,16 +447,30 @@ typedef struct {
 	int negative;   /* d < 0 */
 } fixed_reciprocal;
 FIXED_KERNEL fixed_reciprocal fixed_reciprocal_of(int32_t d);
-FIXED_KERNEL int32_t fixed_times_reciprocal(int32_t x, fixed_reciprocal r); /* x / d */
+/* x / d: x times the reciprocal's scale over 2^shift, given as numbers (a struct is
+ * kept in memory on the M0). */
+FIXED_KERNEL int32_t fixed_times_scale(int32_t x, uint32_t scale, int shift, int negative);
+static inline int32_t fixed_times_reciprocal(int32_t x, fixed_reciprocal r)
+{
+	return fixed_times_scale(x, r.scale, r.shift, r.negative);
+}
 
 /* Q2.30 (unit-length quantities): a b / 2^30 and a dot product / 2^30, rounded and
  * saturated, keep the format of the factor that is not Q2.30 (Q2.30 when both are);
- * a / b for a Q16.16 over a Q2.30; x / d in Q2.30 from d's reciprocal. */
+ * a / b for a Q16.16 over a Q2.30. */
 FIXED_KERNEL int32_t fixed_mul30(int32_t a, int32_t b);
 FIXED_KERNEL int32_t fixed_dot3_30(int32_t ax, int32_t ay, int32_t az, int32_t bx, int32_t by,
 				   int32_t bz);
 FIXED_KERNEL int32_t fixed_div30(int32_t a, int32_t b);
-FIXED_KERNEL int32_t fixed_unit_times_reciprocal(int32_t x, fixed_reciprocal r);
+
+/* The reciprocal whose quotients are Q2.30 units (for |x| <= |d|): its scale over
+ * 2^(shift - 14), not 2^shift, 14 more fraction bits. Its shift is at least 15 (d is at
+ * least one LSB), so at least 1 here. */
+static inline fixed_reciprocal fixed_unit_reciprocal(fixed_reciprocal r)
+{
+	r.shift -= 14;
+	return r;
+}
 
 #if !FIXED_NARROW || defined(FIXED_KERNEL_BODIES)
 FIXED_KERNEL int64_t fixed_wide_mul(int32_t a, int32_t b)
@@ -579,30 +619,29 @@ FIXED_KERNEL fixed_reciprocal fixed_reciprocal_of(int32_t d)
 	return r;
 }
 
-FIXED_KERNEL int32_t fixed_times_reciprocal(int32_t x, fixed_reciprocal r)
+FIXED_KERNEL int32_t fixed_times_scale(int32_t x, uint32_t scale, int shift, int negative)
 {
 	/* x 2^16 / d = x scale / 2^shift, rounded half away from zero: the product (below
-	 * 2^62) in 32-bit halves, and the shift (15 to 45) on them, not on 64 bits. */
+	 * 2^62) in 32-bit halves, and the shift (1 to 45) on them, not on 64 bits. */
 	uint32_t magnitude = x < 0 ? 0u - (uint32_t)x : (uint32_t)x, low, high, q;
-	if (r.scale == 0) /* d = 0: as fixed_div */
+	if (scale == 0) /* d = 0: as fixed_div */
 		return x >= 0 ? FIXED_MAX : -FIXED_MAX;
-	fixed_umul64_parts(magnitude, r.scale, &low, &high);
-	if (r.shift > 32) {
-		high += (uint32_t)1 << (r.shift - 33);
-		q = high >> (r.shift - 32);
+	fixed_umul64_parts(magnitude, scale, &low, &high);
+	if (shift > 32) {
+		high += (uint32_t)1 << (shift - 33);
+		q = high >> (shift - 32);
 	} else {
-		uint32_t half = (uint32_t)1 << (r.shift - 1);
+		uint32_t half = (uint32_t)1 << (shift - 1);
 		low += half;
 		high += low < half;
-		if (r.shift == 32)
+		if (shift == 32)
 			q = high;
 		else
-			q = (high >> r.shift) != 0 ? UINT32_MAX
-						   : (high << (32 - r.shift)) | (low >> r.shift);
+			q = (high >> shift) != 0 ? UINT32_MAX : (high << (32 - shift)) | (low >> shift);
 	}
 	if (q > (uint32_t)INT32_MAX)
 		q = (uint32_t)INT32_MAX;
-	return (x < 0) != r.negative ? -(int32_t)q : (int32_t)q;
+	return (x < 0) != negative ? -(int32_t)q : (int32_t)q;
 }
 
 /* Rounded at bit 29 and saturated: on the M0 in 32-bit halves, inlined (as fixed_mul). */
@@ -632,14 +671,6 @@ FIXED_KERNEL int32_t fixed_div30(int32_t a, int32_t b)
 	if (b == 0)
 		return a >= 0 ? FIXED_MAX : -FIXED_MAX;
 	return fixed_round_div_sat((int64_t)a * ((int64_t)1 << 30), b);
-}
-
-/* The reciprocal's scale over 2^(shift - 14), not 2^shift: 14 more fraction bits. Its
- * shift is at least 15 (d is at least one LSB), so at least 1 here. */
-FIXED_KERNEL int32_t fixed_unit_times_reciprocal(int32_t x, fixed_reciprocal r)
-{
-	r.shift -= 14;
-	return fixed_times_reciprocal(x, r);
 }
 
 #endif

@@ -165,8 +165,9 @@ typedef int32_t unit;
 #define unit_to_real(u) ((((u) >> 13) + 1) >> 1)
 #define unit_sqrt(u) fixed_sqrt30(u)
 #define unit_fabs(u) fixed_abs(u)
-/* x / d as a unit, for |x| <= |d| (a component over a vector's length). */
-#define unit_times_reciprocal(x, r) fixed_unit_times_reciprocal((x), (r))
+/* d's reciprocal for quotients x / d that are units, |x| <= |d| (the components of a
+ * vector over its length), through real_times_reciprocal. */
+#define unit_reciprocal(r) fixed_unit_reciprocal(r)
 /* Beyond any scaled scene's coordinates (4096): an infinite plane is seen out to six
  * times the scene's extent. Hit points out there are within range (4096 + 24000), and
  * the vector arithmetic from them saturates (real_add) rather than overflows. */
@@ -290,7 +291,7 @@ typedef real unit;
 #define unit_to_real(u) (u)
 #define unit_sqrt(u) real_sqrt(u)
 #define unit_fabs(u) real_fabs(u)
-#define unit_times_reciprocal(x, r) real_times_reciprocal((x), (r))
+#define unit_reciprocal(r) (r)
 #define REAL_FIXED 0
 #define REAL_OUTLINE 0
 #define real_mul(a, b) ((a) * (b))

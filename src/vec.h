@@ -153,8 +153,9 @@ VEC_FUNCTION vec3 vec_times_reciprocal(vec3 a, real_reciprocal r)
 /* a divided by the length whose reciprocal r is, as a unit vector. */
 VEC_FUNCTION dir3 dir_times_reciprocal(vec3 a, real_reciprocal r)
 {
-	return dir_make(unit_times_reciprocal(a.x, r), unit_times_reciprocal(a.y, r),
-			unit_times_reciprocal(a.z, r));
+	real_reciprocal per = unit_reciprocal(r);
+	return dir_make(real_times_reciprocal(a.x, per), real_times_reciprocal(a.y, per),
+			real_times_reciprocal(a.z, per));
 }
 
 /* Unit vector along a; the zero vector stays zero (callers reject it first). Divided by

@@ -27,13 +27,15 @@ RAM_LIMIT=16384  # bytes of RAM on both boards (16 KiB)
 DEPTH=$(sed -n 's/^#define RT_MAX_DEPTH \([0-9]*\).*/\1/p' src/config.h)
 
 # run_mcu BOARD ELF OUT ERR ARGS...: rt under qemu, its argv given by semihosting.
+# Its variables are its own (mcu_*): the callers' board and elf stay as they are.
 run_mcu() {
-	board=$1 elf=$2 out=$3 err=$4
+	mcu_board=$1 mcu_elf=$2 mcu_out=$3 mcu_err=$4
 	shift 4
-	args="arg=rt"
-	for a in "$@"; do args="$args,arg=$a"; done
-	timeout 600 qemu-system-arm -M "$board" -display none -serial none -monitor none \
-		-semihosting-config "enable=on,target=native,$args" -kernel "$elf" >"$out" 2>"$err"
+	mcu_args="arg=rt"
+	for a in "$@"; do mcu_args="$mcu_args,arg=$a"; done
+	timeout 600 qemu-system-arm -M "$mcu_board" -display none -serial none -monitor none \
+		-semihosting-config "enable=on,target=native,$mcu_args" -kernel "$mcu_elf" \
+		>"$mcu_out" 2>"$mcu_err"
 }
 
 for cpu in m0 m3; do
@@ -58,6 +60,12 @@ for cpu in m0 m3; do
 	if [ "$cpu" = m0 ]; then
 		check "m0: text $text > $TEXT_LIMIT" [ "$text" -le "$TEXT_LIMIT" ]
 	fi
+
+	# The kernels' unit tests on the board itself (its assembly forms of fixed.h).
+	run_mcu "$board" "build/mcu/kernels-$cpu.elf" "$tmp/mcu.out" "$tmp/mcu.err"
+	status=$?
+	check "$cpu: kernel tests: status $status: $(cat "$tmp/mcu.err")" [ "$status" -eq 0 ]
+	check "$cpu: kernel tests did not run" grep -q '^[1-9][0-9]* passed, 0 failed$' "$tmp/mcu.err"
 
 	# Renders: the bytes the host's fixed-point build writes, with the same options.
 	# mcu-glass: refraction and absorption; polyhedron: convex polyhedra, and --ascii the
