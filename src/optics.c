@@ -4,9 +4,13 @@
 
 dir3 optics_reflect(dir3 d, dir3 n)
 {
+	return optics_reflect_at(d, n, dir_dot(d, n));
+}
+
+dir3 optics_reflect_at(dir3 d, dir3 n, unit c)
+{
 	/* -2 (d.n) as a sum: the same number in floating point, and saturating in Q2.30,
 	 * which holds -2 but not 2 (an LSB off at normal incidence). */
-	unit c = dir_dot(d, n);
 	return dir_madd_unit(d, unit_add(-c, -c), n);
 }
 

@@ -5,8 +5,10 @@
 
 #include "vec.h"
 
-/* Mirror direction of d about the unit normal n. */
+/* Mirror direction of d about the unit normal n; optics_reflect_at takes c = d.n when it
+ * is known already (a hit's incidence). */
 dir3 optics_reflect(dir3 d, dir3 n);
+dir3 optics_reflect_at(dir3 d, dir3 n, unit c);
 
 /* Refracts unit d through unit n (n faces against d) with eta = n1 / n2.
  * Returns 0 on total internal reflection (k = 1 - eta^2 (1 - cos^2) <= 0), else 1 and

@@ -515,9 +515,7 @@ static int parse_sphere(parser *p)
 		o->flags |= OBJ_INSIDE_ONLY;
 		radius = -radius;
 	}
-	o->u.sphere.center = center;
-	o->u.sphere.radius = radius;
-	o->u.sphere.radius2 = real_mul2(radius, radius);
+	sphere_init(&o->u.sphere, center, radius);
 	return 1;
 }
 

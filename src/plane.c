@@ -9,9 +9,7 @@
 
 int plane_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h)
 {
-	origin_term k;
-	k.u.distance = o->u.plane.offset - dir_dot_vec(o->u.plane.normal, r->origin);
-	return plane_intersect_from(o, r, &k, tmin, tmax, h);
+	return plane_intersect_from(o, r, NULL, tmin, tmax, h);
 }
 
 int plane_intersect_from(const object *o, const ray *r, const origin_term *k, real tmin,
@@ -19,9 +17,10 @@ int plane_intersect_from(const object *o, const ray *r, const origin_term *k, re
 {
 	const plane_shape *pl = &o->u.plane;
 	unit denom = dir_dot(pl->normal, r->dir);
-	real distance = k->u.distance, t;
+	real distance, t;
 	if (denom == UNIT_C(0.0))
 		return 0;
+	distance = k ? k->u.distance : pl->offset - dir_dot_vec(pl->normal, r->origin);
 	/* A plane behind the origin or through it (t <= 0) is no hit when tmin >= 0: known
 	 * from the signs, without dividing (costly on small cores). */
 	if (tmin >= REAL_C(0.0) && (distance > REAL_C(0.0)) != (denom > UNIT_C(0.0)))

@@ -40,6 +40,7 @@ typedef struct {
 	vec3 center;
 	real radius;
 	real2 radius2; /* squared: real2, which fixed point keeps in 64 bits */
+	real_reciprocal per_radius; /* for dividing by the radius (fixed point's normals) */
 } sphere_shape;
 
 /* A polygon's vertices are scene.vertices[first .. first+count); a patch's normals

@@ -28,9 +28,23 @@ typedef struct {
 	int flat;     /* 1 when shading is the geometric normal (all but patches): set with front */
 	int rough;    /* 1 when the hit point is only as good as Q16.16 (cones): rays leave it
 		       * by the larger offset (real.h); set with front */
+	unit incidence; /* the ray's direction dotted with the faced normal (<= 0): the cosine
+			 * a reflection about it needs; set with front */
 } hit;
 
+/* On the M0 (small flash, REAL_OUTLINE) the larger shape tests stay functions of their
+ * own: inlined into the dispatch that the scene's loops inline (intersect.c), their
+ * frames added up to one of 204 bytes that every test paid to set up. */
+#if REAL_OUTLINE && defined(__GNUC__)
+#define SHAPE_TEST __attribute__((noinline))
+#else
+#define SHAPE_TEST
+#endif
+
 int sphere_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h);
+
+/* Sets a sphere's centre and radius (> 0), and the terms made from the radius. */
+void sphere_init(sphere_shape *s, vec3 center, real radius);
 
 /* The terms of a sphere's or a plane's test that depend on the ray's origin alone, which
  * rays sharing an origin (every eye ray) can compute once. */
@@ -45,16 +59,25 @@ typedef struct {
 /* Fills k for an object and an origin (nothing for shapes without such terms). */
 void origin_term_init(const object *o, vec3 origin, origin_term *k);
 
-/* The sphere and plane tests from the origin's terms k: the same results as without. */
-int sphere_intersect_from(const object *o, const ray *r, const origin_term *k, real tmin,
-			  real tmax, hit *h);
+#if REAL_FIXED
+/* 1 only when the sphere test's clear-miss tests would reject the ray with unit
+ * direction d (as every ray's is, to 2^-10) from the origin whose offset from the centre
+ * is f, given c = |f|^2 - r^2 or NULL: the same tests in 32-bit products of f's and d's
+ * top bits (fixed point only). */
+int sphere_coarse_miss(const sphere_shape *s, dir3 d, const vec3 *f, const real2 *c);
+#endif
+
+/* The sphere and plane tests from the origin's terms k (or NULL: they compute their own):
+ * the same results either way. */
+SHAPE_TEST int sphere_intersect_from(const object *o, const ray *r, const origin_term *k,
+				     real tmin, real tmax, hit *h);
 int plane_intersect_from(const object *o, const ray *r, const origin_term *k, real tmin,
 			 real tmax, hit *h);
-int polygon_intersect(const scene *s, const object *o, const ray *r, real tmin, real tmax,
-		      hit *h);
+SHAPE_TEST int polygon_intersect(const scene *s, const object *o, const ray *r, real tmin,
+				 real tmax, hit *h);
 int cone_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h);
-int hedron_intersect(const scene *s, const object *o, const ray *r, real tmin, real tmax,
-		     hit *h);
+SHAPE_TEST int hedron_intersect(const scene *s, const object *o, const ray *r, real tmin,
+				real tmax, hit *h);
 int plane_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h);
 
 /* Crossings test (half-open rule, canonical edge order): is (pu, pv) inside the polygon

@@ -226,8 +226,9 @@ static vec3 trace_refraction(tracer *t, const ray *r, departure *from, const mat
 	media_cross(m, mat_index, h->front, &next_media);
 	eta = real_div(medium_ior(s, m), h->front ? mat->ior : medium_ior(s, &next_media));
 	if (!optics_refract(r->dir, h->normal, eta, &dir))
-		return vec_mul(mat->color, trace_mirror(t, from, optics_reflect(r->dir, h->normal),
-							level, weight, mat->kt, m));
+		return vec_mul(mat->color,
+			       trace_mirror(t, from, optics_reflect_at(r->dir, h->normal, h->incidence),
+					    level, weight, mat->kt, m));
 	next.origin = trace_offset(h, dir_neg(h->normal));
 	next.dir = dir;
 	t->stats.refract_rays++;
@@ -273,9 +274,13 @@ static vec3 trace_ray(tracer *t, const ray *r, int skip, int level, real weight,
 	/* Phong shading reflects about the shading normal; if that would send the ray into
 	 * the surface (possible on patches), reflect about the geometric normal instead
 	 * (the same ray when the two normals are one). */
-	mirror_dir = optics_reflect(r->dir, h.shading);
-	if (!h.flat && dir_dot(mirror_dir, h.normal) <= UNIT_C(0.0))
-		mirror_dir = optics_reflect(r->dir, h.normal);
+	if (h.flat) {
+		mirror_dir = optics_reflect_at(r->dir, h.normal, h.incidence);
+	} else {
+		mirror_dir = optics_reflect(r->dir, h.shading);
+		if (dir_dot(mirror_dir, h.normal) <= UNIT_C(0.0))
+			mirror_dir = optics_reflect_at(r->dir, h.normal, h.incidence);
+	}
 
 	from.h = &h;
 	from.point = h.point; /* until made */

@@ -274,9 +274,7 @@ static void test_nan_inf(void)
 
 	o.kind = SHAPE_SPHERE;
 	o.flags = OBJ_TWO_SIDED;
-	o.u.sphere.center = VEC_C(0, 0, 5);
-	o.u.sphere.radius = REAL_C(1.0);
-	o.u.sphere.radius2 = real2_from(REAL_C(1.0));
+	sphere_init(&o.u.sphere, VEC_C(0, 0, 5), REAL_C(1.0));
 #if !REAL_FIXED
 	/* Q16.16 has no NaN and no infinity: N01, N03, N05 and N04's NaN direction cannot
 	 * be written there (its stand-in for N04 is below, and N02 is checked at load). */

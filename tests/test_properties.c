@@ -209,9 +209,7 @@ static void self_hit_sphere(const sphere_setup *setup)
 	s.objects[0].kind = SHAPE_SPHERE;
 	s.objects[0].flags = OBJ_TWO_SIDED;
 	s.objects[0].material = 0;
-	s.objects[0].u.sphere.center = c;
-	s.objects[0].u.sphere.radius = radius;
-	s.objects[0].u.sphere.radius2 = real_mul2(radius, radius);
+	sphere_init(&s.objects[0].u.sphere, c, radius);
 	for (n = 0; n < RAYS; n++) {
 		double o[3], target[3], d[3], normal[3];
 		ray r;

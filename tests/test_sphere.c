@@ -136,9 +136,7 @@ static object make_sphere(vec3 center, real radius, unsigned flags)
 	o.flags = (unsigned char)flags;
 	o.material = 0;
 	o.line = 0;
-	o.u.sphere.center = center;
-	o.u.sphere.radius = radius;
-	o.u.sphere.radius2 = real_mul2(radius, radius);
+	sphere_init(&o.u.sphere, center, radius);
 	return o;
 }
 
@@ -338,6 +336,113 @@ static void test_range_refusals(void)
 			       "resolution 16 16\ns 0 -6371000 0 6371000\ns 0 1000 -100 10\n");
 }
 
+#if REAL_FIXED
+static unsigned long long coarse_state = 12345;
+
+/* A uniform double in [lo, hi) (Knuth's MMIX LCG). */
+static double coarse_rnd(double lo, double hi)
+{
+	coarse_state = coarse_state * 6364136223846793005ULL + 1442695040888963407ULL;
+	return lo + (hi - lo) * ((double)(coarse_state >> 11) * (1.0 / 9007199254740992.0));
+}
+
+/* sphere_coarse_miss may say "miss" only where the exact clear-miss tests (those floating
+ * point makes) would: over random spheres of every size in the scaled range and rays that
+ * pass them at random distances, many of them within a few units of the tangent. And it
+ * must settle most clear misses, or it would be a cost and no gain. */
+static void test_coarse_miss(void)
+{
+	int i, wrong = 0, clear = 0, settled = 0, settled_from_f = 0;
+	/* Counted over the rays from anywhere that pass at random distances, not those near
+	 * the tangent or from just outside the sphere. */
+	for (i = 0; i < 200000; i++) {
+		double radius = exp(coarse_rnd(0.0, 7.6)); /* 1 to 2000 units */
+		double c[3], o[3], p[3], u[3], len = 0.0, pass;
+		int j;
+		object sp;
+		ray r;
+		vec3 f;
+		real2 cc;
+		real b;
+		int exact, coarse_f, coarse_c;
+		for (j = 0; j < 3; j++) {
+			c[j] = coarse_rnd(-3000.0, 3000.0);
+			o[j] = coarse_rnd(-4000.0, 4000.0);
+			u[j] = coarse_rnd(-1.0, 1.0);
+		}
+		/* A quarter of the origins lie just outside the sphere, where c is a few units
+		 * (a shadow ray leaving a small sphere). */
+		if (i % 4 >= 2) {
+			double v[3], vl = 0.0, at = radius + coarse_rnd(0.0, 4.0);
+			for (j = 0; j < 3; j++) {
+				v[j] = coarse_rnd(-1.0, 1.0);
+				vl += v[j] * v[j];
+			}
+			vl = sqrt(vl);
+			for (j = 0; j < 3; j++)
+				o[j] = c[j] + v[j] / vl * at;
+		}
+		/* Aim at a point whose distance from the centre is near the radius: (radius +
+		 * pass) along u from the centre. */
+		for (j = 0; j < 3; j++)
+			len += u[j] * u[j];
+		len = sqrt(len);
+		pass = coarse_rnd(-radius, 4.0 * radius);
+		if (i & 1) {
+			/* Half of the rays pass where the exact test's answer changes, within a
+			 * few units (b^2 - c changes by 2|b| per unit there): perpendicular
+			 * distance sqrt(r^2 + c 2^-10) from the centre, for c = |f|^2 - r^2. */
+			double fc[3], f2 = 0.0, w[3], wu = 0.0, perp;
+			for (j = 0; j < 3; j++) {
+				fc[j] = c[j] - o[j];
+				f2 += fc[j] * fc[j];
+			}
+			perp = sqrt(radius * radius + (f2 - radius * radius) / 1024.0) +
+			       coarse_rnd(-12.0, 12.0);
+			if (f2 <= radius * radius || perp * perp >= f2)
+				continue;
+			/* w: u made perpendicular to the centre's direction. */
+			for (j = 0; j < 3; j++)
+				wu += u[j] * fc[j];
+			for (j = 0, len = 0.0; j < 3; j++) {
+				w[j] = u[j] - wu / f2 * fc[j];
+				len += w[j] * w[j];
+			}
+			len = sqrt(len);
+			for (j = 0; j < 3; j++)
+				p[j] = fc[j] * sqrt(1.0 - perp * perp / f2) + w[j] / len * perp;
+		} else {
+			for (j = 0; j < 3; j++)
+				p[j] = c[j] + u[j] / len * (radius + pass) - o[j];
+		}
+		sp = make_sphere(vec_make(REAL_C(c[0]), REAL_C(c[1]), REAL_C(c[2])), REAL_C(radius),
+				 OBJ_TWO_SIDED);
+		r = test_ray(vec_make(REAL_C(o[0]), REAL_C(o[1]), REAL_C(o[2])),
+			     vec_make(REAL_C(p[0] / 8192.0), REAL_C(p[1] / 8192.0),
+				      REAL_C(p[2] / 8192.0)));
+		f = vec_sub(r.origin, sp.u.sphere.center);
+		cc = vec_dot2(f, f) - sp.u.sphere.radius2;
+		b = dir_dot_vec(r.dir, f);
+		exact = cc > 0 && (b > REAL_C(0.0) ||
+				   real_mul2(b, b) - cc < -(real2_error_bound(b, cc) + real2_unit_slack(cc)));
+		coarse_f = sphere_coarse_miss(&sp.u.sphere, r.dir, &f, NULL);
+		coarse_c = sphere_coarse_miss(&sp.u.sphere, r.dir, &f, &cc);
+		wrong += (coarse_f || coarse_c) && !exact;
+		if (i % 4 != 0)
+			continue;
+		clear += exact;
+		settled += coarse_c;
+		settled_from_f += coarse_f;
+	}
+	CHECK_INT(wrong, 0);
+	/* Measured: 14,945 clear misses, 72 % of them settled with c and 71 % from f alone;
+	 * the rest pass close to spheres far away. */
+	CHECK(clear > 12000);
+	CHECK(settled > clear * 0.65);
+	CHECK(settled_from_f > clear * 0.65);
+}
+#endif
+
 void suite_sphere(void)
 {
 	size_t i;
@@ -346,4 +451,7 @@ void suite_sphere(void)
 	test_solve_quadratic();
 	test_sphere_contract();
 	test_range_refusals();
+#if REAL_FIXED
+	test_coarse_miss();
+#endif
 }
