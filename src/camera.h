@@ -10,24 +10,38 @@ typedef struct {
 	dir3 forward, right, up; /* orthonormal, right-handed as NFF is */
 	real half_width;         /* tan(angle / 2): half the image plane at unit distance */
 	int width, height;
+#if REAL_FIXED
+	/* right and up times half_width / width: their steps per half pixel on the image
+	 * plane, in Q32.32 (camera.c). */
+	real2 right_step[3], up_step[3];
+#else
 	real_reciprocal per_width; /* for dividing by the width: once here, not per ray */
+#endif
 } camera;
 
-/* Sets up the camera for a width x height image. Returns 0 when the view is degenerate
- * (from = at, or up parallel to the view direction). */
-int camera_init(camera *c, const view *v, int width, int height);
+/* Sets up the camera for a width x height image. Returns NULL, or what is wrong: a
+ * degenerate view (from = at, or up parallel to the view direction), or in fixed point
+ * one too wide for the image's size. */
+const char *camera_init(camera *c, const view *v, int width, int height);
 
-/* What the eye rays of one image line share: its offset along up on the image plane. */
+/* The eye rays of one image line, left to right: camera_line_at makes it for the line y2
+ * half pixels from the top (2 j + 1 is the centre of pixel row j, 2 j its top edge),
+ * starting x2 half pixels from the left; each camera_next_ray gives the next ray and
+ * moves one pixel to the right. */
 typedef struct {
-	vec3 up_offset;
+	const camera *c;
+	int x2;      /* the next ray's x, in half pixels */
+	dir3 normal; /* of the plane through the eye that holds all of the line's rays */
+#if REAL_FIXED
+	/* forward + v up + u right for the next ray, and u right's step per pixel, in Q32.32:
+	 * a row of directions by additions, exact in integers (no per-pixel products). */
+	real2 sum[3], step[3];
+#else
+	vec3 up_offset; /* v up, the line's offset on the image plane */
+#endif
 } camera_line;
 
-/* The line at y pixels from the top, for camera_ray. */
-camera_line camera_line_at(const camera *c, real y);
-
-/* The eye ray through image position (x, y), in pixels from the top-left corner, for
- * the line at y: (i + 0.5, j + 0.5) is the centre of pixel (i, j), (i, j) its top-left
- * corner. */
-ray camera_ray(const camera *c, const camera_line *line, real x);
+camera_line camera_line_at(const camera *c, int y2, int x2);
+void camera_next_ray(camera_line *line, ray *r);
 
 #endif

@@ -622,7 +622,7 @@ FIXED_KERNEL fixed_reciprocal fixed_reciprocal_of(int32_t d)
 FIXED_KERNEL int32_t fixed_times_scale(int32_t x, uint32_t scale, int shift, int negative)
 {
 	/* x 2^16 / d = x scale / 2^shift, rounded half away from zero: the product (below
-	 * 2^62) in 32-bit halves, and the shift (1 to 45) on them, not on 64 bits. */
+	 * 2^62) in 32-bit halves, and the shift (1 to 46) on them, not on 64 bits. */
 	uint32_t magnitude = x < 0 ? 0u - (uint32_t)x : (uint32_t)x, low, high, q;
 	if (scale == 0) /* d = 0: as fixed_div */
 		return x >= 0 ? FIXED_MAX : -FIXED_MAX;

@@ -67,8 +67,30 @@ void origin_terms_init(const scene *s, vec3 origin, origin_terms *k)
 {
 	int i;
 	k->origin = origin;
+	k->candidates = ~(uint32_t)0;
 	for (i = 0; i < s->object_count; i++)
 		origin_term_init(&s->objects[i], origin, &k->terms[i]);
+}
+
+void origin_terms_plane(const scene *s, dir3 n, origin_terms *k)
+{
+	int i;
+	k->candidates = ~(uint32_t)0;
+	for (i = 0; i < s->object_count && i < 32; i++) {
+		const object *o = &s->objects[i];
+		const vec3 *f = &k->terms[i].f;
+		real reach;
+		if (o->kind != SHAPE_SPHERE)
+			continue;
+		/* The centre's distance from the plane against the radius, with room for the
+		 * rays' own rounding (their directions are good to about 2^-16, and so their
+		 * plane at the centre's distance) and the sphere test's: 2^-10 of the scale. */
+		reach = real_add(o->u.sphere.radius,
+				 real_mul(real_add(o->u.sphere.radius, real_add(vec_max_abs(*f), vec_max_abs(*f))),
+					  REAL_C(0.0009765625)));
+		if (real_fabs(dir_dot_vec(n, *f)) > reach)
+			k->candidates &= ~((uint32_t)1 << i);
+	}
 }
 
 int object_can_rehit(const scene *s, int index, int front)
@@ -96,9 +118,10 @@ int scene_intersect_from(const scene *s, const ray *r, const origin_terms *k, in
 	} else
 #endif
 	{
+		uint32_t candidates = k ? k->candidates : ~(uint32_t)0;
 		for (i = 0; i < s->object_count; i++) {
 			/* Each hit shrinks tmax, so later objects only report nearer hits. */
-			if (i != skip &&
+			if (i != skip && (i >= 32 || candidates >> i & 1) &&
 			    shape_intersect(s, &s->objects[i], r, k ? &k->terms[i] : NULL, REAL_C(0.0),
 					    tmax, h)) {
 				tmax = h->t;

@@ -3,6 +3,8 @@
 #ifndef RT_INTERSECT_H
 #define RT_INTERSECT_H
 
+#include <stdint.h>
+
 #include "shape.h"
 
 /* Dispatches to the object's shape; same contract as the shapes (shape.h). */
@@ -20,9 +22,16 @@ int scene_intersect(const scene *s, const ray *r, real tmax, hit *h);
 typedef struct {
 	vec3 origin;
 	origin_term terms[RT_MAX_OBJECTS];
+	/* Objects 0 to 31 that rays from the origin in the current plane may meet (bit i for
+	 * object i; later objects are always tested): origin_terms_plane. */
+	uint32_t candidates;
 } origin_terms;
 
 void origin_terms_init(const scene *s, vec3 origin, origin_terms *k);
+
+/* The rays that follow from k's origin all lie in the plane through it with unit normal
+ * n (an image line's eye rays): spheres the plane misses are left out of their searches. */
+void origin_terms_plane(const scene *s, dir3 n, origin_terms *k);
 
 /* Can a ray that leaves object `index` on the side a hit came from (front: the outside)
  * meet it again? Not a flat one (plane, polygon, patch): a line crosses its plane once,

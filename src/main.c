@@ -246,6 +246,7 @@ int main(int argc, char **argv)
 	output out;
 	progress_bar bar;
 	sink *target;
+	const char *why;
 	int status = parse_options(argc, argv, &opt), width, height, depth, ok;
 	unsigned long long start, parsed;
 
@@ -287,8 +288,9 @@ int main(int argc, char **argv)
 			   width, height);
 		return 1;
 	}
-	if (!camera_init(&cam, &the_scene.camera, width, height)) {
-		diag_error(opt.scene_path, 0, "degenerate view");
+	why = camera_init(&cam, &the_scene.camera, width, height);
+	if (why) {
+		diag_error(opt.scene_path, 0, "%s", why);
 		return 1;
 	}
 	depth = opt.spd ? 5 : opt.depth ? opt.depth : the_scene.depth;

@@ -193,7 +193,7 @@ static inline real real_power_of_two_below(real x)
 	return x;
 }
 /* The hit point's own error is a few LSB, and t * 2^-17 where an eye ray's direction is
- * summed in Q16.16 before it is normalised: the snapping grid is the power of two at or
+ * rounded to Q16.16 before it is normalised: the snapping grid is the power of two at or
  * below 4 LSB + 2^-16 of the scale, and at most the scene's limit (itself a power of two
  * of at least 1 LSB, which snaps nothing). */
 static inline real real_snap_grid(real scale, real limit)

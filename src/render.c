@@ -13,9 +13,11 @@ static int row_ids[RT_MAX_WIDTH + 1];
 static void trace_corner_row(tracer *t, const camera *c, int y, vec3 *out)
 {
 	int x;
-	camera_line line = camera_line_at(c, real_from_int(y));
+	camera_line line = camera_line_at(c, 2 * y, 0);
+	tracer_eye_line(t, line.normal);
 	for (x = 0; x <= c->width; x++) {
-		ray r = camera_ray(c, &line, real_from_int(x));
+		ray r;
+		camera_next_ray(&line, &r);
 		out[x] = tracer_eye(t, &r, NULL);
 	}
 }
@@ -44,9 +46,11 @@ int render_image(tracer *t, const camera *c, enum render_sampling sampling, int 
 			done = above;
 			top = RT_CORNER_SAMPLING - top;
 		} else {
-			camera_line line = camera_line_at(c, real_from_int(y) + REAL_C(0.5));
+			camera_line line = camera_line_at(c, 2 * y + 1, 1);
+			tracer_eye_line(t, line.normal);
 			for (x = 0; x < c->width; x++) {
-				ray r = camera_ray(c, &line, real_from_int(x) + REAL_C(0.5));
+				ray r;
+				camera_next_ray(&line, &r);
 				rows[0][x] = tracer_eye(t, &r, &row_ids[x]);
 			}
 			done = rows[0];

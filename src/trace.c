@@ -7,9 +7,9 @@
  * weight can no longer change an 8-bit pixel. Nothing is traced that cannot contribute.
  *
  * Stack: trace_ray recurses at most `depth` <= RT_MAX_DEPTH levels. With double and gcc -O2
- * (-fstack-usage) one level is trace_ray's 736 bytes (shading and refraction inlined) plus
- * trace_mirror's 128, and the deepest leaf below it (scene_intersect + cone_intersect) 256:
- * 8 levels * 864 + 256 = about 7.2 KiB worst case.
+ * (-fstack-usage) one level is trace_ray's 848 bytes (shading and refraction inlined) plus
+ * trace_mirror's 192, and the deepest leaf below it (scene_intersect + cone_intersect) 336:
+ * 8 levels * 1040 + 336 = about 8.5 KiB worst case (the MCU's: docs/mcu.md).
  * See LICENSE for copyright and licence. */
 #include "trace.h"
 
@@ -254,14 +254,9 @@ static vec3 trace_ray(tracer *t, const ray *r, int skip, int level, real weight,
 
 	/* REAL_FAR: beyond anything in the scene, and far enough from overflow that the hit
 	 * point can be computed in every type. */
-	/* Rays from the camera (eye rays) take the terms that depend on their origin from
-	 * the table made once for the frame. */
-	if (!scene_intersect_from(s, r,
-				  r->origin.x == t->eye.origin.x && r->origin.y == t->eye.origin.y &&
-						  r->origin.z == t->eye.origin.z
-					  ? &t->eye
-					  : NULL,
-				  skip, REAL_FAR, &h)) {
+	/* Eye rays (level 1) take the terms that depend on their origin from the table made
+	 * once for the frame, and the objects their image line can meet from it. */
+	if (!scene_intersect_from(s, r, level == 1 ? &t->eye : NULL, skip, REAL_FAR, &h)) {
 		if (hit_object)
 			*hit_object = -1;
 		/* A ray that never leaves an absorbing medium is absorbed completely. */
@@ -306,6 +301,11 @@ static vec3 trace_ray(tracer *t, const ray *r, int skip, int level, real weight,
 		color = vec_mul(color, vec_make(optics_beer(absorb->x, h.t), optics_beer(absorb->y, h.t),
 						optics_beer(absorb->z, h.t)));
 	return bounded(color);
+}
+
+void tracer_eye_line(tracer *t, dir3 n)
+{
+	origin_terms_plane(t->scene, n, &t->eye);
 }
 
 vec3 tracer_eye(tracer *t, const ray *r, int *hit_object)

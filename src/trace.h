@@ -32,8 +32,12 @@ typedef struct {
 
 void tracer_init(tracer *t, const scene *s, int depth, real cutoff);
 
-/* Colour seen along an eye ray (linear, not clamped). *hit_object gets the index of the
- * first object hit, or -1; it may be NULL. */
+/* The eye rays that follow lie in the plane through the eye with unit normal n (an
+ * image line's, camera_line.normal): objects the plane misses are not looked for. */
+void tracer_eye_line(tracer *t, dir3 n);
+
+/* Colour seen along an eye ray, from the camera (linear, not clamped). *hit_object gets
+ * the index of the first object hit, or -1; it may be NULL. */
 vec3 tracer_eye(tracer *t, const ray *r, int *hit_object);
 
 /* The offset origin of a ray leaving the hit h on the side `side` points to: moved by

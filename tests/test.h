@@ -129,6 +129,7 @@ void suite_properties(void);
 void suite_parse(void);
 void suite_image(void);
 void suite_output(void);
+void suite_camera(void);
 void suite_fixed(void);
 void suite_fixed_kernels(void); /* its integer kernels: also run on the MCU */
 

@@ -125,6 +125,7 @@ int main(int argc, char **argv)
 	options opt;
 	camera cam;
 	sink *target;
+	const char *why;
 	int status = parse_options(argc, argv, &opt), width, height, ok;
 	if (status >= 0)
 		return status;
@@ -141,8 +142,9 @@ int main(int argc, char **argv)
 			   height, RT_MAX_WIDTH, RT_MAX_HEIGHT);
 		return 1;
 	}
-	if (!camera_init(&cam, &the_scene.camera, width, height)) {
-		diag_error(opt.scene_path, 0, "degenerate view");
+	why = camera_init(&cam, &the_scene.camera, width, height);
+	if (why) {
+		diag_error(opt.scene_path, 0, "%s", why);
 		return 1;
 	}
 	tracer_init(&the_tracer, &the_scene, opt.depth ? opt.depth : the_scene.depth,
