@@ -64,14 +64,15 @@ void origin_term_init(const object *o, vec3 origin, origin_term *k)
  * the integer parts of f and the top 16 bits of d (Q2.14), in 32-bit products: one
  * instruction each on a small core, where the exact b is twelve. Most rays miss most
  * spheres, and this settles most of them before b, and c for rays from a hit point, are
- * computed (8,176 -> 7,013 instructions per pixel on the M0 for scenes/mcu-demo.nff).
+ * computed: on the M0 it took scenes/mcu-demo.nff from 8,176 to 7,013 instructions per
+ * pixel when it came.
  *
  * fx, fy, fz are floor(f) in units; c_floor is at most c, in units. With d = dh 2^-14 +
  * dl, dl in [0, 2^-14), and f = fh + fl, fl in [0, 1):
  *   |d.f - dh.fh 2^-14| = |dh.fl 2^-14 + dl.fh + dl.fl| < sqrt(3) + (|fh|1 + 3) 2^-14
  * for a unit d (|dh|1 <= sqrt(3) 2^14), which is below e = 3 + floor(|fh|1 2^-14) <= 9
  * (a bound from f's own size would settle more rays that pass far spheres closely, but
- * costs more on the M0 than it saves on scenes/mcu-demo.nff: 7,145 against 7,013). So b
+ * cost more on the M0 than it saved on scenes/mcu-demo.nff: 7,145 against 7,013). So b
  * (rounded by 2^-17 more) lies in (bq - e, bq + 1 + e), bq = floor(B 2^-14), B = dh.fh:
  * b > 0 when bq >= e, and |b| + 1 < bm = |bq| + e + 2. bm^2 < c (1 - 2^-10 - 2^-15)
  * then implies the clear miss's b^2 + |b| 2^-16 + 2^-15 < c (1 - 2^-10 - 2^-16). */
