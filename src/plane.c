@@ -2,9 +2,10 @@
  * An infinite plane reaches the horizon, beyond the farthest distance a number type
  * holds comfortably (REAL_FAR: 1e15 in floating point, six scene extents in Q16.16): a
  * ray that meets it farther away meets it "at the horizon", at 0.99 REAL_FAR along the
- * ray. The point is then off the plane, but so far away that its lighting is that of
- * the plane's far end; the tracer sends no rays from it (they would start beyond the
- * range fixed point can compute with). See LICENSE for copyright and licence. */
+ * ray. The point is then off the plane; the hit keeps the reciprocal of the true t, from
+ * which the tracer lights the plane's true far point (its lights' directions scaled
+ * down), and sends no rays from it (they would start beyond the range fixed point can
+ * compute with). See LICENSE for copyright and licence. */
 #include "shape.h"
 
 int plane_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h)
@@ -31,6 +32,10 @@ int plane_intersect_from(const object *o, const ray *r, const origin_term *k, re
 	if (!(t > tmin && t < tmax))
 		return 0;
 	if (h) {
+		/* Where the true t is beyond the horizon its reciprocal still is a number: the
+		 * tracer lights the plane's far point from it. */
+		if (!(t < HORIZON_T))
+			h->per_t = unit_over_real(denom, distance);
 		h->t = t;
 		h->point = dir_madd(r->origin, t, r->dir);
 		h->normal = pl->normal;

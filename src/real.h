@@ -159,6 +159,7 @@ typedef int32_t unit;
 #define unit_scale(u, r) fixed_mul((u), (r))
 #define real_mul_unit(r, u) fixed_mul30((r), (u))
 #define real_div_unit(r, u) fixed_div30((r), (u))
+#define unit_over_real(u, r) fixed_div((u), (r)) /* u / r as a unit: 2^16 u / r */
 #define unit_dot3(ax, ay, az, bx, by, bz) fixed_dot3_30((ax), (ay), (az), (bx), (by), (bz))
 #define real_dot3_unit(ux, uy, uz, rx, ry, rz) fixed_dot3_30((ux), (uy), (uz), (rx), (ry), (rz))
 /* Rounded to Q16.16, halves upwards, in 32 bits. */
@@ -286,6 +287,7 @@ typedef real unit;
 #define unit_scale(u, r) ((u) * (r))
 #define real_mul_unit(r, u) ((r) * (u))
 #define real_div_unit(r, u) ((r) / (u))
+#define unit_over_real(u, r) ((u) / (r))
 #define unit_dot3(ax, ay, az, bx, by, bz) real_dot3((ax), (ay), (az), (bx), (by), (bz))
 #define real_dot3_unit(ux, uy, uz, rx, ry, rz) real_dot3((ux), (uy), (uz), (rx), (ry), (rz))
 #define unit_to_real(u) (u)

@@ -30,6 +30,8 @@ typedef struct {
 		       * by the larger offset (real.h); set with front */
 	unit incidence; /* the ray's direction dotted with the faced normal (<= 0): the cosine
 			 * a reflection about it needs; set with front */
+	unit per_t;     /* at the horizon (t = HORIZON_T, plane.c): 1 / the true t, whose
+			 * point is beyond the type's numbers; unset elsewhere */
 } hit;
 
 /* On the M0 (small flash, REAL_OUTLINE) the larger shape tests stay functions of their

@@ -126,9 +126,25 @@ static vec3 departure_point(departure *d)
 	return d->point;
 }
 
+/* At the horizon the hit's point stands in for origin + dir / per_t, which is past every
+ * number of the type, and so is the light's offset from it; that offset times per_t,
+ * (light - origin) per_t - dir, is not, and points the same way. A function of its own on
+ * the M0: inlined, its numbers took room in every level of the recursion's stack. */
+#if REAL_OUTLINE && defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static vec3 horizon_to_light(const light *l, const ray *r, unit per_t)
+{
+	vec3 from_origin = vec_sub(l->position, r->origin);
+	return vec_sub(vec_make(real_mul_unit(from_origin.x, per_t),
+				real_mul_unit(from_origin.y, per_t),
+				real_mul_unit(from_origin.z, per_t)),
+		       dir_to_vec(r->dir));
+}
+
 /* Diffuse and highlight from every light the surface faces, through shadow rays. */
-static vec3 shade_lights(tracer *t, departure *from, const material *mat, dir3 mirror_dir,
-			 int level)
+static vec3 shade_lights(tracer *t, const ray *r, departure *from, const material *mat,
+			 dir3 mirror_dir, int level)
 {
 	const scene *s = t->scene;
 	const hit *h = from->h;
@@ -144,6 +160,10 @@ static vec3 shade_lights(tracer *t, departure *from, const material *mat, dir3 m
 		dir3 dir;
 		vec3 lit;
 		ray shadow;
+		if (!(h->t < HORIZON_T)) {
+			to_light = horizon_to_light(l, r, h->per_t);
+			distance2 = vec_dot2(to_light, to_light);
+		}
 		if (!(distance2 > 0))
 			continue;
 		/* The distance and the direction from one reciprocal square root (fixed point:
@@ -281,7 +301,7 @@ static vec3 trace_ray(tracer *t, const ray *r, int skip, int level, real weight,
 	from.point = h.point; /* until made */
 	from.made = 0;
 	from.skip = object_can_rehit(s, h.object, h.front) ? -1 : h.object;
-	color = shade_lights(t, &from, mat, mirror_dir, level);
+	color = shade_lights(t, r, &from, mat, mirror_dir, level);
 	ks = real_min(mat->ks, MIRROR_MAX);
 	if (!(h.t < HORIZON_T)) {
 		/* No rays from the horizon (they would start beyond fixed point's range). Its
