@@ -66,7 +66,6 @@ static void face_forward(const ray *r, hit *h)
 void origin_terms_init(const scene *s, vec3 origin, origin_terms *k)
 {
 	int i;
-	k->origin = origin;
 	k->candidates = ~(uint32_t)0;
 	for (i = 0; i < s->object_count; i++)
 		origin_term_init(&s->objects[i], origin, &k->terms[i]);

@@ -20,7 +20,6 @@ int scene_intersect(const scene *s, const ray *r, real tmax, hit *h);
 /* Every object's terms that depend on the ray's origin alone (shape.h), for all rays
  * from one point: every eye ray starts at the camera. */
 typedef struct {
-	vec3 origin;
 	origin_term terms[RT_MAX_OBJECTS];
 	/* Objects 0 to 31 that rays from the origin in the current plane may meet (bit i for
 	 * object i; later objects are always tested): origin_terms_plane. */

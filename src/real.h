@@ -321,6 +321,14 @@ typedef real real_reciprocal;
 #define real2_error_bound(b, w) ((real_mul2((b), (b)) + real_fabs(w)) * REAL_OFFSET)
 #define real2_unit_slack(w) ((w) * REAL_C(0.0009765625)) /* 2^-10 of w (see above) */
 #endif
+/* REAL_APART marks a function that stays a function of its own where flash is short
+ * (REAL_OUTLINE: the M0), whatever the compiler would inline; each use says why. */
+#if REAL_OUTLINE && defined(__GNUC__)
+#define REAL_APART __attribute__((noinline))
+#else
+#define REAL_APART
+#endif
+
 /* real2 is the type of squared lengths and products of two lengths (dot products of
  * positions, areas, quadratic coefficients): real_mul2(a, b) is a * b as a real2,
  * real2_dot3 is a dot product as a real2, real2_from widens, real2_sqrt gives back a real length, real2_div(w, b) is w / b as a

@@ -34,14 +34,9 @@ typedef struct {
 			 * point is beyond the type's numbers; unset elsewhere */
 } hit;
 
-/* On the M0 (small flash, REAL_OUTLINE) the larger shape tests stay functions of their
- * own: inlined into the dispatch that the scene's loops inline (intersect.c), their
- * frames added up to one of 204 bytes that every test paid to set up. */
-#if REAL_OUTLINE && defined(__GNUC__)
-#define SHAPE_TEST __attribute__((noinline))
-#else
-#define SHAPE_TEST
-#endif
+/* On the M0 the larger shape tests stay functions of their own (REAL_APART): inlined
+ * into the dispatch that the scene's loops inline (intersect.c), their frames added up to
+ * one of 204 bytes that every test paid to set up. */
 
 int sphere_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h);
 
@@ -71,14 +66,14 @@ int sphere_coarse_miss(const sphere_shape *s, dir3 d, const vec3 *f, const real2
 
 /* The sphere and plane tests from the origin's terms k (or NULL: they compute their own):
  * the same results either way. */
-SHAPE_TEST int sphere_intersect_from(const object *o, const ray *r, const origin_term *k,
+REAL_APART int sphere_intersect_from(const object *o, const ray *r, const origin_term *k,
 				     real tmin, real tmax, hit *h);
 int plane_intersect_from(const object *o, const ray *r, const origin_term *k, real tmin,
 			 real tmax, hit *h);
-SHAPE_TEST int polygon_intersect(const scene *s, const object *o, const ray *r, real tmin,
+REAL_APART int polygon_intersect(const scene *s, const object *o, const ray *r, real tmin,
 				 real tmax, hit *h);
 int cone_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h);
-SHAPE_TEST int hedron_intersect(const scene *s, const object *o, const ray *r, real tmin,
+REAL_APART int hedron_intersect(const scene *s, const object *o, const ray *r, real tmin,
 				real tmax, hit *h);
 int plane_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h);
 

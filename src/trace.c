@@ -130,10 +130,7 @@ static vec3 departure_point(departure *d)
  * number of the type, and so is the light's offset from it; that offset times per_t,
  * (light - origin) per_t - dir, is not, and points the same way. A function of its own on
  * the M0: inlined, its numbers took room in every level of the recursion's stack. */
-#if REAL_OUTLINE && defined(__GNUC__)
-__attribute__((noinline))
-#endif
-static vec3 horizon_to_light(const light *l, const ray *r, unit per_t)
+REAL_APART static vec3 horizon_to_light(const light *l, const ray *r, unit per_t)
 {
 	vec3 from_origin = vec_sub(l->position, r->origin);
 	return vec_sub(vec_make(real_mul_unit(from_origin.x, per_t),
@@ -152,7 +149,8 @@ static vec3 shade_lights(tracer *t, const ray *r, departure *from, const materia
 	int i;
 	for (i = 0; i < s->light_count; i++) {
 		const light *l = &s->lights[i];
-		vec3 to_light = vec_sub(l->position, h->point);
+		vec3 to_light = h->t < HORIZON_T ? vec_sub(l->position, h->point)
+						 : horizon_to_light(l, r, h->per_t);
 		real2 distance2 = vec_dot2(to_light, to_light);
 		real distance, diffuse, highlight, pass;
 		unit cosine;
@@ -160,10 +158,6 @@ static vec3 shade_lights(tracer *t, const ray *r, departure *from, const materia
 		dir3 dir;
 		vec3 lit;
 		ray shadow;
-		if (!(h->t < HORIZON_T)) {
-			to_light = horizon_to_light(l, r, h->per_t);
-			distance2 = vec_dot2(to_light, to_light);
-		}
 		if (!(distance2 > 0))
 			continue;
 		/* The distance and the direction from one reciprocal square root (fixed point:
