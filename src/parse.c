@@ -601,15 +601,6 @@ static int parse_polygon(parser *p, int patch)
 	o = new_object(p, patch ? SHAPE_PATCH : SHAPE_POLYGON, line);
 	if (!o)
 		return 0;
-	/* The polygon test's snapping grid stays below a 256th of every edge (real.h), so no
-	 * polygon's outline moves by more than a 512th of its edges. */
-	for (i = 0; i < count; i++) {
-		real edge = vec_max_abs(vec_sub(s->vertices[first + (i + 1 == count ? 0 : i + 1)],
-						s->vertices[first + i]));
-		real part = real_mul(edge, REAL_C(0.00390625));
-		if (part > REAL_C(0.0))
-			s->snap_limit = real_min(s->snap_limit, real_power_of_two_below(part));
-	}
 	poly = &o->u.polygon;
 	poly->normal = normal;
 	/* The plane passes through the centroid: the best fit for slightly non-planar input. */
@@ -617,12 +608,12 @@ static int parse_polygon(parser *p, int patch)
 	poly->offset = dir_dot_vec(poly->normal, centroid);
 	poly->first = first;
 	poly->count = (int)count;
+#if RT_SHAPE_PATCH
 	poly->axis = unit_fabs(poly->normal.x) > unit_fabs(poly->normal.y)
 			     ? (unit_fabs(poly->normal.x) > unit_fabs(poly->normal.z) ? 0 : 2)
 			     : (unit_fabs(poly->normal.y) > unit_fabs(poly->normal.z) ? 1 : 2);
 	for (i = 0; i < count; i++)
 		s->projected[first + i] = polygon_project(s->vertices[first + i], poly->axis);
-#if RT_SHAPE_PATCH
 	if (patch) {
 		/* A zero vertex normal falls back to the face normal. */
 		for (i = 0; i < count; i++) {

@@ -1,10 +1,89 @@
 /* polygon.c - ray/polygon (NFF p) and ray/patch (NFF pp) intersection.
- * Plane first, then the crossings test in the plane (Haines, Graphics Gems IV) with the
- * half-open rule and each edge's endpoints in a canonical order, so a point on an edge
- * shared by two polygons belongs to exactly one of them (numerics.md section 3).
+ * The distance from the plane, the inside test in the ray's own frame: a crossings test
+ * with the half-open rule, each edge's endpoints in a canonical order and its side decided
+ * exactly, so a ray through an edge or vertex shared by several polygons meets exactly
+ * one of them, whatever their planes (numerics.md section 3).
  * See LICENSE for copyright and licence. */
 #include "shape.h"
 
+/* The inside test looks down the ray, as the watertight ray/triangle test of Woop, Benthin
+ * and Wald (JCGT 2013) does: with z the axis of the direction's largest component (x and
+ * y the next two, cyclically), a point p is seen at
+ *   u = a_x d_z - a_z d_x,  v = a_y d_z - a_z d_y,  a = p - origin,
+ * its projection along the ray onto z = 0, scaled by d_z (no division). The ray meets the
+ * polygon where (0, 0) is inside the projected outline. A vertex's (u, v) depends on the
+ * vertex and the ray alone, so the polygons that share an edge see it at the same two
+ * points, whatever planes and normals they rounded to (tilted, non-planar, any type). */
+typedef struct {
+	int z;      /* the axis of the direction's largest component */
+	unit dx, dy, dz; /* the direction, its axes in the order z + 1, z + 2, z */
+	vec3 origin; /* the same order */
+	real v_origin; /* the origin's v in the frame of the axes' zero: v = v(p) - v_origin */
+} ray_frame;
+
+/* p's axes in the frame's order: a rotation, which keeps the outline's orientation. */
+static vec3 frame_axes(vec3 p, int z)
+{
+	return z == 2 ? p : z == 0 ? vec_make(p.y, p.z, p.x) : vec_make(p.z, p.x, p.y);
+}
+
+static ray_frame frame_of(const ray *r)
+{
+	ray_frame f;
+	unit ax = unit_fabs(r->dir.x), ay = unit_fabs(r->dir.y), az = unit_fabs(r->dir.z);
+	f.z = ax > ay ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
+	f.dx = f.z == 0 ? r->dir.y : f.z == 1 ? r->dir.z : r->dir.x;
+	f.dy = f.z == 0 ? r->dir.z : f.z == 1 ? r->dir.x : r->dir.y;
+	f.dz = f.z == 0 ? r->dir.x : f.z == 1 ? r->dir.y : r->dir.z;
+	f.origin = frame_axes(r->origin, f.z);
+	f.v_origin = real_cross_unit(f.dz, f.origin.y, f.dy, f.origin.z);
+	return f;
+}
+
+/* The crossings test for one choice of z, so that the compiler makes a copy for each
+ * with the axes fixed. v is linear in the vertex: the vertex's own less the origin's,
+ * two products per vertex. u, which only the few edges that straddle v = 0 need, comes
+ * from the vertex relative to the origin. */
+static inline int crossings(const vec3 *vertices, int count, const ray_frame *f, int z)
+{
+	int inside = 0, i;
+	vec3 a = frame_axes(vertices[count - 1], z);
+	real av = real_cross_unit(f->dz, a.y, f->dy, a.z) - f->v_origin;
+	for (i = 0; i < count; i++) {
+		vec3 b = frame_axes(vertices[i], z);
+		real bv = real_cross_unit(f->dz, b.y, f->dy, b.z) - f->v_origin;
+		/* Crossings (Haines, Graphics Gems IV) of the +u ray from (0, 0), half-open in
+		 * v: an edge counts when its ends lie on different sides of v = 0, an end on
+		 * it counting as above. Most edges stop here, before their u is needed. */
+		if ((av >= 0) != (bv >= 0)) {
+			real au = real_cross_unit(f->dz, a.x - f->origin.x, f->dx, a.z - f->origin.z);
+			real bu = real_cross_unit(f->dz, b.x - f->origin.x, f->dx, b.z - f->origin.z);
+			/* Canonical order (by v): both neighbours of an edge test the same
+			 * endpoints in the same order. The edge meets v = 0 at u >= 0 when
+			 * cross(lo, hi) >= 0 (hi.v > lo.v), decided exactly: each edge's answer
+			 * is then that of the exact geometry of the projected vertices, so
+			 * neighbours tile the frame with no gap and no overlap, and a ray through
+			 * a shared edge or vertex is inside exactly one of them. */
+			if (av < bv ? real_products_ge(au, bv, av, bu) : real_products_ge(bu, av, bv, au))
+				inside = !inside;
+		}
+		a = b;
+		av = bv;
+	}
+	return inside;
+}
+
+int polygon_contains_ray(const vec3 *vertices, int count, const ray *r)
+{
+	ray_frame f = frame_of(r);
+	if (count < 1)
+		return 0;
+	return f.z == 0 ? crossings(vertices, count, &f, 0)
+	       : f.z == 1 ? crossings(vertices, count, &f, 1)
+			  : crossings(vertices, count, &f, 2);
+}
+
+#if RT_SHAPE_PATCH
 vec2 polygon_project(vec3 p, int axis)
 {
 	vec2 q;
@@ -13,52 +92,6 @@ vec2 polygon_project(vec3 p, int axis)
 	return q;
 }
 
-int polygon_contains_2d(const vec2 *uv, int count, real pu, real pv)
-{
-	int inside = 0, i;
-	vec2 a = uv[count - 1];
-
-	for (i = 0; i < count; a = uv[i++]) {
-		vec2 lo = a, hi = uv[i];
-		/* Half-open in v: the edge counts when its ends lie on different sides of
-		 * v = pv, an end exactly on it counting as above. Most edges stop here. */
-		if ((lo.v >= pv) == (hi.v >= pv))
-			continue;
-		/* Canonical order (by v, then u): both neighbours of an edge see the same
-		 * endpoints in the same order and so round the same way. */
-		if (hi.v < lo.v || (hi.v == lo.v && hi.u < lo.u)) {
-			vec2 swap = lo;
-			lo = hi;
-			hi = swap;
-		}
-		/* Does the edge cross the +u ray from the point, i.e. is its u-intercept >= pu?
-		 * Without a division (hi.v - lo.v > 0 here), that is cross(lo - p, hi - p) >= 0.
-		 * Relative to p, each vertex is rounded once, the same way for every edge and
-		 * polygon that meets there. The intercept form rounded `pu - lo.u` per edge, and
-		 * a hit point within rounding of a vertex shared by several polygons was then
-		 * claimed by three of them (G11 through rays: 147 in 400k in float, 21 in
-		 * double). */
-		{
-			real au = lo.u - pu, av = lo.v - pv, bu = hi.u - pu, bv = hi.v - pv;
-			if (real_mul2(au, bv) >= real_mul2(av, bu))
-				inside = !inside;
-		}
-	}
-	return inside;
-}
-
-int polygon_contains(const vec3 *vertices, int count, int axis, real pu, real pv)
-{
-	vec2 uv[RT_MAX_POLY_VERTS];
-	int i;
-	if (count < 1 || count > RT_MAX_POLY_VERTS)
-		return 0;
-	for (i = 0; i < count; i++)
-		uv[i] = polygon_project(vertices[i], axis);
-	return polygon_contains_2d(uv, count, pu, pv);
-}
-
-#if RT_SHAPE_PATCH
 /* Twice the signed area of triangle (a, b, c) in the polygon's projection: a product of
  * two lengths, so a real2, exact in fixed point. */
 static real2 area_2d(vec2 a, vec2 b, vec2 c)
@@ -70,8 +103,8 @@ static real2 area_2d(vec2 a, vec2 b, vec2 c)
  * the fan triangle (0, i, i+1) that holds p (SPD patches are all triangles). The weights
  * are ratios of areas, which the projection that drops the normal's largest axis scales
  * all alike (by that component, at least 1/sqrt(3)): they are taken there, from the
- * projected vertices the inside test uses, in two products each rather than the six
- * and three scalings of areas along the normal in 3D. */
+ * vertices the parser projected, in two products each rather than the six and three
+ * scalings of areas along the normal in 3D. */
 static dir3 patch_normal(const scene *s, const polygon_shape *poly, vec3 p)
 {
 	const vec2 *uv = s->projected + poly->first;
@@ -107,7 +140,6 @@ int polygon_intersect(const scene *s, const object *o, const ray *r, real tmin, 
 	const polygon_shape *poly = &o->u.polygon;
 	unit denom = dir_dot(poly->normal, r->dir);
 	real t;
-	vec3 p;
 
 	/* A ray parallel to the plane (or lying in it) misses (numerics.md G07, G08). */
 	if (denom == UNIT_C(0.0))
@@ -119,22 +151,10 @@ int polygon_intersect(const scene *s, const object *o, const ray *r, real tmin, 
 	t = real_div_unit(poly->offset - dir_dot_vec(poly->normal, r->origin), denom);
 	if (!(t > tmin && t < tmax))
 		return 0;
-	p = dir_madd(r->origin, t, r->dir);
-	{
-		/* The point is tested snapped to a grid a little coarser than its rounding
-		 * error: a ray meant exactly through a shared edge or vertex then lands exactly
-		 * on it, whatever the number type, and the half-open rule settles it the same
-		 * way in all of them (without the snap, by which way p happened to round). The
-		 * grid's powers of two keep every exactly placed point on it. */
-		real grid = real_snap_grid(real_max(real_max(vec_max_abs(p), real_fabs(t)),
-						    REAL_C(0.0009765625)),
-					   s->snap_limit);
-		vec2 q = polygon_project(p, poly->axis);
-		if (!polygon_contains_2d(s->projected + poly->first, poly->count,
-					 real_snap(q.u, grid), real_snap(q.v, grid)))
-			return 0;
-	}
+	if (!polygon_contains_ray(s->vertices + poly->first, poly->count, r))
+		return 0;
 	if (h) {
+		vec3 p = dir_madd(r->origin, t, r->dir);
 		h->t = t;
 		h->point = p;
 		h->normal = poly->normal;

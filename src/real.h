@@ -34,26 +34,13 @@
  * REAL_C wraps every literal so tables compile in every build.
  * REAL_OFFSET is the relative size of the offset that moves a secondary ray's origin
  * off the surface (times max(1, |p|inf, t)): a few thousand ulps of the hit point,
- * well above the hit point's rounding error and well below any feature size.
- * REAL_SNAP_BITS sets the grid the polygon test snaps hit points to (real_snap_grid):
- * 2^-REAL_SNAP_BITS times the hit point's scale, rounded down to a power of two, a
- * margin of 4 over the hit point's own error (scenes/hard/grid-edges.nff: at most 2^-25
- * of the scale in float, 2^-53 in double) and no coarser than a 256th of the scene's
- * shortest polygon edge (scene.snap_limit), so that no polygon is lost in its cells. Long
- * double snaps as coarsely as double: a scene's decimal numbers (53.13010235415598 for
- * 2 atan(1/2) degrees) are themselves off by some 2^-56, which long double would otherwise
- * see. */
+ * well above the hit point's rounding error and well below any feature size. */
 #if defined(RT_REAL_FLOAT)
 typedef float real;
 #define REAL_NAME "float"
 #define REAL_C(x) ((float)(x))
 #define REAL_MAX FLT_MAX
 #define REAL_OFFSET REAL_C(6.103515625e-05) /* 2^-14 = 512 ulp */
-#define REAL_SNAP_BITS 21 /* grid 2^-21 = 4 ulp of the scale */
-#define REAL_MANT_DIG FLT_MANT_DIG
-#define real_floor floorf
-#define real_scalbn scalbnf
-#define real_ilogb ilogbf
 #define real_sqrt sqrtf
 #define real_fabs fabsf
 #define real_pow powf
@@ -61,17 +48,14 @@ typedef float real;
 #define real_tan_degrees(x) tanf((x) * REAL_C(0.017453292519943295))
 #define real_isfinite(x) isfinite(x)
 #define real_parse(s, end) strtof((s), (end))
+/* a b >= c d, decided exactly: products of floats are exact in double. */
+#define real_products_ge(a, b, c, d) ((double)(a) * (double)(b) >= (double)(c) * (double)(d))
 #elif defined(RT_REAL_DOUBLE)
 typedef double real;
 #define REAL_NAME "double"
 #define REAL_C(x) ((double)(x))
 #define REAL_MAX DBL_MAX
 #define REAL_OFFSET REAL_C(9.313225746154785e-10) /* 2^-30 = 2^22 ulp */
-#define REAL_SNAP_BITS 49 /* grid 2^-49 = 8 ulp */
-#define REAL_MANT_DIG DBL_MANT_DIG
-#define real_floor floor
-#define real_scalbn scalbn
-#define real_ilogb ilogb
 #define real_sqrt sqrt
 #define real_fabs fabs
 #define real_pow pow
@@ -79,17 +63,13 @@ typedef double real;
 #define real_tan_degrees(x) tan((x) * REAL_C(0.017453292519943295))
 #define real_isfinite(x) isfinite(x)
 #define real_parse(s, end) strtod((s), (end))
+#define real_fma fma
 #elif defined(RT_REAL_LONG_DOUBLE)
 typedef long double real;
 #define REAL_NAME "long double"
 #define REAL_C(x) ((long double)(x))
 #define REAL_MAX LDBL_MAX
 #define REAL_OFFSET REAL_C(9.094947017729282e-13) /* 2^-40 = 2^23 ulp */
-#define REAL_SNAP_BITS 49 /* as double's: see below */
-#define REAL_MANT_DIG LDBL_MANT_DIG
-#define real_floor floorl
-#define real_scalbn scalbnl
-#define real_ilogb ilogbl
 #define real_sqrt sqrtl
 #define real_fabs fabsl
 #define real_pow powl
@@ -97,6 +77,7 @@ typedef long double real;
 #define real_tan_degrees(x) tanl((x) * 0.0174532925199432957692369L) /* pi / 180 */
 #define real_isfinite(x) isfinite(x)
 #define real_parse(s, end) strtold((s), (end))
+#define real_fma fmal
 #elif defined(RT_REAL_FIXED)
 /* Q16.16 in an int32_t; every product and quotient goes through 64 bits (fixed.c). The
  * scene is scaled at load so that it fits (scene_scale in the parser). */
@@ -121,6 +102,10 @@ typedef int64_t real2; /* Q32.32: squares and products of lengths */
 #define real_from_int(i) fixed_from_int(i)
 #define real_to_int(x) ((x) >> 16)
 #define real_mul2(a, b) fixed_wide_mul((a), (b))
+/* a b >= c d, decided exactly: 64-bit products. */
+#define real_products_ge(a, b, c, d) (fixed_wide_mul((a), (b)) >= fixed_wide_mul((c), (d)))
+/* u a - w b for units u, w and reals a, b, rounded once. */
+#define real_cross_unit(u, a, w, b) fixed_dot3_30((u), -(w), 0, (a), (b), 0)
 #define real2_dot3(ax, ay, az, bx, by, bz) fixed_dot3_wide((ax), (ay), (az), (bx), (by), (bz))
 #define real2_from(a) ((real2)(a) * 65536)
 #define real2_sqrt(w) fixed_sqrt2(w)
@@ -185,29 +170,6 @@ typedef int32_t unit;
  * the dark speckles on cones.nff (1,350 -> 4,093 of 65,536 at 256x256). */
 #define real_surface_offset(scale, rough) \
 	((rough) ? (real)16 + ((scale) >> 13) : (real)8 + ((scale) >> 16))
-/* The largest power of two at or below x >= 1: the lowest set bit cleared until one is
- * left (fewer instructions in flash than a bit length). */
-static inline real real_power_of_two_below(real x)
-{
-	while (x & (x - 1))
-		x &= x - 1;
-	return x;
-}
-/* The hit point's own error is a few LSB, and t * 2^-17 where an eye ray's direction is
- * rounded to Q16.16 before it is normalised: the snapping grid is the power of two at or
- * below 4 LSB + 2^-16 of the scale, and at most the scene's limit (itself a power of two
- * of at least 1 LSB, which snaps nothing). */
-static inline real real_snap_grid(real scale, real limit)
-{
-	return real_min(real_power_of_two_below(4 + (scale >> 16)), limit);
-}
-/* x rounded to a multiple of grid (a power of two), halves upwards; saturating, for a
- * point out at the range's end. */
-static inline real real_snap(real x, real grid)
-{
-	real up = fixed_add(x, grid / 2);
-	return up - (up & (grid - 1));
-}
 #define real_from_text(text, shift, out) fixed_from_text((text), (shift), (out))
 #define REAL_RANGE_TEXT "the range of Q16.16 fixed point"
 #define real_format(x, shift, buf, size) fixed_format((x), (shift), (buf), (size))
@@ -226,26 +188,6 @@ typedef real real2; /* floating point needs no wider type for squares */
 #define REAL_FAR REAL_C(1e15) /* a length beyond any scene's coordinates */
 #define real_ldexp(x, e) real_ldexp_((x), (e))
 #define real_surface_offset(scale, rough) ((void)(rough), real_mul(REAL_OFFSET, (scale)))
-/* The largest power of two at or below x > 0. */
-static inline real real_power_of_two_below(real x)
-{
-	return real_scalbn(REAL_C(1.0), real_ilogb(x));
-}
-/* The largest power of two at or below 2^-REAL_SNAP_BITS times scale (> 0) and at most
- * the scene's limit, or 0 (no snapping) when that is below 2^(2 - REAL_MANT_DIG) of the
- * scale, a few ulps, where rounding to it would not be exact. x rounded to a multiple of
- * it: the quotient and product are exact, and with |x| <= scale x / grid is below
- * 2^(REAL_MANT_DIG - 1), where adding a half rounds exactly too. */
-static inline real real_snap_grid(real scale, real limit)
-{
-	int e = real_ilogb(scale);
-	real grid = real_min(real_scalbn(REAL_C(1.0), e - REAL_SNAP_BITS), limit);
-	return grid >= real_scalbn(REAL_C(1.0), e + 2 - REAL_MANT_DIG) ? grid : REAL_C(0.0);
-}
-static inline real real_snap(real x, real grid)
-{
-	return grid > REAL_C(0.0) ? real_floor(x / grid + REAL_C(0.5)) * grid : x;
-}
 /* Reading numbers: real_from_text converts a whole token, times 2^shift (the scene's
  * length scale, always 0 in floating point), and returns a REAL_TEXT_ status. */
 static inline int real_from_text(const char *text, int shift, real *out)
@@ -274,6 +216,16 @@ static inline int real_can_represent(real extent, real feature, const char **why
 	*why = 0;
 	return 1;
 }
+#if defined(real_fma)
+/* a b >= c d, decided exactly. Rounding is monotonic, so rounded products that differ
+ * order the exact ones; when they are equal, the exact difference is that of the
+ * products' rounding errors, which a fused multiply-add gives exactly (C99's fma). */
+static inline int real_products_ge(real a, real b, real c, real d)
+{
+	real ab = a * b, cd = c * d;
+	return ab != cd ? ab > cd : real_fma(a, b, -ab) >= real_fma(c, d, -cd);
+}
+#endif
 static inline real real_ldexp_(real x, int e)
 {
 	return e ? x * real_pow(REAL_C(2.0), (real)e) : x;
@@ -300,6 +252,7 @@ typedef real unit;
 #define real_add(a, b) ((a) + (b))
 #define real_div(a, b) ((a) / (b))
 #define real_dot3(ax, ay, az, bx, by, bz) ((ax) * (bx) + (ay) * (by) + (az) * (bz))
+#define real_cross_unit(u, a, w, b) ((u) * (a) - (w) * (b))
 #define real_from_int(i) ((real)(i))
 #define real_to_int(x) ((int)(x))
 #define real_mul2(a, b) ((a) * (b))

@@ -15,7 +15,6 @@ void scene_init(scene *s, const char *file)
 	s->ambient = s->background;
 	s->depth = RT_DEFAULT_DEPTH;
 	s->cutoff = REAL_C(0.00390625); /* 1/256: cannot change an 8-bit pixel */
-	s->snap_limit = REAL_MAX;
 	s->material_count = s->light_count = s->object_count = 0;
 	s->vertex_count = s->plane_count = 0;
 }

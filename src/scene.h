@@ -45,7 +45,7 @@ typedef struct {
 
 /* A polygon's vertices are scene.vertices[first .. first+count); a patch's normals
  * are scene.normals at the same indices. `normal` and `offset` give its plane n.x = offset;
- * `axis` is the coordinate dropped to project it to 2D (the normal's largest). */
+ * `axis` is the coordinate a patch drops to project it to 2D (the normal's largest). */
 typedef struct {
 	dir3 normal;
 	real offset;
@@ -120,8 +120,6 @@ typedef struct {
 	vec3 ambient;
 	int depth;   /* ray tree levels, 1..RT_MAX_DEPTH */
 	real cutoff; /* smallest path weight still traced */
-	real snap_limit; /* the polygon test's largest snapping grid (real.h): a power of two
-			  * at most 1/256 of the shortest polygon edge */
 
 	int material_count, light_count, object_count, vertex_count, plane_count;
 	material materials[RT_MAX_MATERIALS];
@@ -131,7 +129,9 @@ typedef struct {
 #if RT_SHAPE_PATCH
 	dir3 normals[RT_MAX_VERTICES];
 #endif
-	vec2 projected[RT_MAX_VERTICES]; /* vertices projected for the point-in-polygon test */
+#if RT_SHAPE_PATCH
+	vec2 projected[RT_MAX_VERTICES]; /* vertices projected for the shading blend */
+#endif
 	halfspace planes[RT_MAX_PLANES];
 
 #if RT_USE_BVH

@@ -77,16 +77,16 @@ REAL_APART int hedron_intersect(const scene *s, const object *o, const ray *r, r
 				real tmax, hit *h);
 int plane_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h);
 
-/* Crossings test (half-open rule, canonical edge order): is (pu, pv) inside the polygon
- * with 2D vertices uv[0 .. count)? */
-int polygon_contains_2d(const vec2 *uv, int count, real pu, real pv);
+/* Does the ray's line pass through the polygon with vertices[0 .. count)? The crossings
+ * test in the ray's frame (polygon.c): the same answer for an edge or vertex in every
+ * polygon that shares it, so exactly one of a tiling's polygons is met. */
+int polygon_contains_ray(const vec3 *vertices, int count, const ray *r);
 
-/* The same for 3D vertices projected by dropping coordinate `axis` (u = axis+1, v = axis+2,
- * mod 3), as the parser projects them; at most RT_MAX_POLY_VERTS vertices. */
-int polygon_contains(const vec3 *vertices, int count, int axis, real pu, real pv);
-
-/* The 2D coordinates of p in the projection that drops `axis`. */
+#if RT_SHAPE_PATCH
+/* The 2D coordinates of p in the projection that drops `axis` (u = axis+1, v = axis+2,
+ * mod 3), where a patch's shading normal is blended. */
 vec2 polygon_project(vec3 p, int axis);
+#endif
 
 /* Solves a t^2 + 2 b t + c = 0 for its roots t0 <= t1 without cancellation
  * (Press et al.: q = -(b + sign(b) sqrt(b^2 - a c)), t0 = c/q, t1 = q/a), given the

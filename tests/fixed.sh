@@ -77,7 +77,8 @@ if diff=$(python3 tests/imgcmp.py "$tmp/fixed.ppm" "$tmp/ref.ppm"); then ok; els
 fi
 
 # Small polygons far from the origin (triangles 0.1 across at x = 900, a 1/9000 of the
-# scene): the polygon test's snapping grid stays below them (real.h, scene.snap_limit).
+# scene): each is seen where it is (the polygon test once snapped hit points to a grid
+# that swallowed them).
 {
 	printf 'v\nfrom 900 0 -6\nat 900 0 0\nup 0 1 0\nangle 30\nhither 0.001\nresolution 64 64\n'
 	printf 'b 0 0 0\nl 900 0 -10\nf 1 1 1 1 0 0 0 1\ns -1000 0 0 1\n'

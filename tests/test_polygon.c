@@ -53,9 +53,12 @@ static object xy_polygon(const real *xy, int count, unsigned flags)
 	return polygon_object(add_xy(xy, count), count, VEC_C(0, 0, 1), 0, 2, flags);
 }
 
+/* Is (x, y) inside a polygon in z = 0? Through the ray up the z axis from below, whose
+ * frame (polygon.c) is the plane's own (u, v) = (x, y). */
 static int contains(const object *o, real x, real y)
 {
-	return polygon_contains(s.vertices + o->u.polygon.first, o->u.polygon.count, 2, x, y);
+	ray r = test_ray(vec_make(x, y, REAL_C(-1)), VEC_C(0, 0, 1));
+	return polygon_contains_ray(s.vertices + o->u.polygon.first, o->u.polygon.count, &r);
 }
 
 static const real unit_square[] = {REAL_C(0), REAL_C(0), REAL_C(1), REAL_C(0),
@@ -155,8 +158,6 @@ static void test_shared(void)
 	object a, b, c, d;
 
 	s.vertex_count = 0;
-	/* The parser's limit for these unit squares: a 256th of their edges. */
-	s.snap_limit = REAL_C(0.00390625);
 	a = xy_polygon(unit_square, 4, 0);
 	b = xy_polygon(right, 4, 0);
 	c = xy_polygon(top_left, 4, 0);
@@ -170,32 +171,50 @@ static void test_shared(void)
 	CHECK_INT(contains(&c, REAL_C(1.0), REAL_C(1.0)), 0);
 	CHECK_INT(contains(&d, REAL_C(1.0), REAL_C(1.0)), 0);
 
-	/* The same through polygon_intersect from hit points a rounding error or two off the
+	/* The same through polygon_intersect, for rays from above a rounding error off the
 	 * edge and the corner, to either side (float 2^-23 = 1 ulp of 1, double and long
-	 * double 2^-51 = 2 ulp, Q16.16 1 LSB): each goes where the exact point goes, in every
-	 * type (hit points are snapped to a grid of 2^-21 of their scale in float, 2^-49 in
-	 * double, 4 LSB here in Q16.16: real.h). */
+	 * double 2^-51 = 2 ulp, Q16.16 1 LSB): each meets exactly one polygon, the one its
+	 * point is in. */
 	{
 		static const double sides[4][2] = {{1, 1}, {1, -1}, {-1, 1}, {-1, -1}};
 		double off = TOL3(ldexp(1.0, -23), ldexp(1.0, -51), 1 * LSB);
-		int k, hits_a_edge = 0, hits_b_edge = 0, hits_a_corner = 0, hits_other_corner = 0;
+		int k, wrong_edge = 0, wrong_corner = 0;
 		for (k = 0; k < 4; k++) {
 			hit h;
+			int east = sides[k][0] > 0, up = sides[k][1] > 0;
 			ray r = test_ray(vec_make(test_real(1.0 + sides[k][0] * off),
 						  test_real(0.5 + sides[k][1] * off), REAL_C(1.0)),
 					 VEC_C(0, 0, -1));
-			hits_a_edge += polygon_intersect(&s, &a, &r, 0, REAL_MAX, &h);
-			hits_b_edge += polygon_intersect(&s, &b, &r, 0, REAL_MAX, &h);
+			int in_a = polygon_intersect(&s, &a, &r, 0, REAL_MAX, &h);
+			int in_b = polygon_intersect(&s, &b, &r, 0, REAL_MAX, &h);
+			wrong_edge += in_a != !east || in_b != east;
 			r.origin.y = test_real(1.0 + sides[k][1] * off);
-			hits_a_corner += polygon_intersect(&s, &a, &r, 0, REAL_MAX, &h);
-			hits_other_corner += polygon_intersect(&s, &b, &r, 0, REAL_MAX, &h) +
-					     polygon_intersect(&s, &c, &r, 0, REAL_MAX, &h) +
-					     polygon_intersect(&s, &d, &r, 0, REAL_MAX, &h);
+			in_a = polygon_intersect(&s, &a, &r, 0, REAL_MAX, &h);
+			in_b = polygon_intersect(&s, &b, &r, 0, REAL_MAX, &h);
+			{
+				int in_c = polygon_intersect(&s, &c, &r, 0, REAL_MAX, &h);
+				int in_d = polygon_intersect(&s, &d, &r, 0, REAL_MAX, &h);
+				wrong_corner += in_a != (!east && !up) || in_b != (east && !up) ||
+						in_c != (!east && up) || in_d != (east && up);
+			}
 		}
-		CHECK_INT(hits_a_edge, 4);
-		CHECK_INT(hits_b_edge, 0);
-		CHECK_INT(hits_a_corner, 4);
-		CHECK_INT(hits_other_corner, 0);
+		CHECK_INT(wrong_edge, 0);
+		CHECK_INT(wrong_corner, 0);
+	}
+	/* Exactly on the edge and the corner from above, whose frame mirrors the plane's:
+	 * still exactly one polygon each. */
+	{
+		hit h;
+		ray r = test_ray(VEC_C(1, 0.5, 1), VEC_C(0, 0, -1));
+		CHECK_INT(polygon_intersect(&s, &a, &r, 0, REAL_MAX, &h) +
+				  polygon_intersect(&s, &b, &r, 0, REAL_MAX, &h),
+			  1);
+		r = test_ray(VEC_C(1, 1, 1), VEC_C(0, 0, -1));
+		CHECK_INT(polygon_intersect(&s, &a, &r, 0, REAL_MAX, &h) +
+				  polygon_intersect(&s, &b, &r, 0, REAL_MAX, &h) +
+				  polygon_intersect(&s, &c, &r, 0, REAL_MAX, &h) +
+				  polygon_intersect(&s, &d, &r, 0, REAL_MAX, &h),
+			  1);
 	}
 }
 
@@ -370,10 +389,9 @@ static void pick_on_edge(const grid *g, double uv[2])
 		const double(*e)[2] = g->edge[(int)(rnd() * g->edges)];
 		double t = rnd();
 		/* A point that close to the end of an edge on the grid's border could land
-		 * outside the grid: the polygon test snaps hit points to a grid of 2^-19 (float)
-		 * to 2^-14 (Q16.16) of their scale, and in Q16.16 a ray's hit point is off by up
-		 * to |p| 2^-17 / cos (the plane's rounded normal, far from the origin). Points
-		 * stay 5 % of an edge from its ends (interior vertices are picked above). */
+		 * outside the grid once rounded (in Q16.16 a ray's origin and direction are off
+		 * by an LSB or so, far from the origin). Points stay 5 % of an edge from its
+		 * ends (interior vertices are picked above). */
 		t = 0.05 + 0.9 * t;
 		uv[0] = e[0][0] + t * (e[1][0] - e[0][0]);
 		uv[1] = e[0][1] + t * (e[1][1] - e[0][1]);
@@ -581,10 +599,8 @@ static void test_patch(void)
 	e[1] = 0.25 * r3;
 	e[2] = 0.25 + 0.5 * r2 + 0.25 * r3;
 	check_patch_normal(&tri, REAL_C(0.75), REAL_C(0.25), e);
-	/* Near a vertex the blend tends to that vertex's normal. The point stays beyond the
-	 * grid the polygon test snaps hit points to at this scale (real.h: 2^-19 in float,
-	 * 8 LSB in Q16.16, where 1e-5 is below an LSB and the point is 8 and 16 LSB from the
-	 * vertex instead). */
+	/* Near a vertex the blend tends to that vertex's normal (in Q16.16, where 1e-5 is
+	 * below an LSB, the point is 8 and 16 LSB from the vertex instead). */
 	{
 #if REAL_FIXED
 		real x = REAL_C(1.0) - 8, y = REAL_C(1.0) - 16;

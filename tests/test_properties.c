@@ -668,9 +668,9 @@ static void fall_through(const char *name, fixture *fx)
 			a = (ci + cj) % 2 ? fx->uv[ci][cj] : fx->uv[ci + 1][cj];
 			b = (ci + cj) % 2 ? fx->uv[ci + 1][cj + 1] : fx->uv[ci][cj + 1];
 		}
-		/* Edges may end on the grid's border, where a point within the polygon test's
-		 * snapping grid (real.h) of the end could land outside: stay 5 % of an edge
-		 * from its ends (interior vertices are picked exactly above). */
+		/* Edges may end on the grid's border, where a point within rounding of the end
+		 * could land outside: stay 5 % of an edge from its ends (interior vertices are
+		 * picked exactly above). */
 		if (b != a)
 			t = 0.05 + 0.9 * t;
 		uv[0] = a[0] + t * (b[0] - a[0]);
