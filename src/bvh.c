@@ -308,12 +308,56 @@ void bvh_build(scene *s)
 	build_node(s, 0, s->unbounded_count, s->object_count - s->unbounded_count, 0);
 }
 
-/* A ray prepared for slab tests: 1/d per axis (IEEE gives +-inf for a zero component)
- * and, per axis, which box corner it meets first. */
+/* A ray prepared for slab tests: 1/d per axis and, per axis, which box corner it meets
+ * first. A zero component must mean an infinite slab, decided by the origin alone:
+ * floating point gets that from IEEE's 1/0 = +-inf. In Q16.16 a reciprocal saturates
+ * (about 32768 for any component below 2^-15), and a box the ray runs along would be cut
+ * short and skipped: every eye ray of the image row and column through the eye's own
+ * coordinates, and all rays of a narrow view. So a component whose reciprocal passes
+ * RECIPROCAL_LIMIT marks its axis `divided`: its slab distances are quotients, which
+ * saturate towards the right infinity, and a zero component's are +-infinity by the
+ * origin's side. */
 typedef struct {
 	vec3 origin, inv;
 	int near_x, near_y, near_z; /* 0: the lower bound is entered first, 1: the upper */
+#if REAL_FIXED
+	int divided; /* 1 when some axis's distances are divided out (slab_distance) */
+	dir3 dir;
+#endif
 } slab_ray;
+
+#if REAL_FIXED
+#define RECIPROCAL_LIMIT REAL_C(16384.0) /* 1/d for |d| >= 2^-14, well inside Q16.16 */
+
+/* Where the ray meets the plane `offset` past its origin along an axis of direction
+ * component d: the quotient, or for d = 0 +-infinity (REAL_MAX) by the side of the
+ * origin, a plane through it counting as behind (near) or ahead (far) so that a ray
+ * lying in a box's face still enters the box. */
+static real slab_distance(real offset, unit d, int far)
+{
+	if (d == UNIT_C(0.0))
+		return offset > 0 || (offset == 0 && far) ? REAL_MAX : -REAL_MAX;
+	return real_div_unit(offset, d);
+}
+
+/* box_hit's interval for a ray with a divided axis: every distance a quotient. */
+static int box_hit_divided(const bvh_node *n, const slab_ray *r, real tmax, real *tenter)
+{
+	real tnear = REAL_C(0.0), tfar = tmax;
+	int axis;
+	for (axis = 0; axis < 3; axis++) {
+		int near = axis == 0 ? r->near_x : axis == 1 ? r->near_y : r->near_z;
+		unit d = axis == 0 ? r->dir.x : axis == 1 ? r->dir.y : r->dir.z;
+		real o = vec_get(r->origin, axis);
+		real t0 = slab_distance(vec_get(n->bounds[near], axis) - o, d, 0);
+		real t1 = slab_distance(vec_get(n->bounds[!near], axis) - o, d, 1);
+		tnear = t0 > tnear ? t0 : tnear;
+		tfar = t1 < tfar ? t1 : tfar;
+	}
+	*tenter = tnear;
+	return tnear <= tfar;
+}
+#endif
 
 /* Does the ray enter node n's box before tmax? *tenter gets where. The comparisons are
  * written so that NaN from 0 * inf (a ray lying in a slab plane) leaves the interval as
@@ -321,12 +365,17 @@ typedef struct {
 static inline int box_hit(const bvh_node *n, const slab_ray *r, real tmax, real *tenter)
 {
 	real tnear = REAL_C(0.0), tfar = tmax;
-	real x0 = real_mul(n->bounds[r->near_x].x - r->origin.x, r->inv.x);
-	real x1 = real_mul(n->bounds[!r->near_x].x - r->origin.x, r->inv.x);
-	real y0 = real_mul(n->bounds[r->near_y].y - r->origin.y, r->inv.y);
-	real y1 = real_mul(n->bounds[!r->near_y].y - r->origin.y, r->inv.y);
-	real z0 = real_mul(n->bounds[r->near_z].z - r->origin.z, r->inv.z);
-	real z1 = real_mul(n->bounds[!r->near_z].z - r->origin.z, r->inv.z);
+	real x0, x1, y0, y1, z0, z1;
+#if REAL_FIXED
+	if (r->divided)
+		return box_hit_divided(n, r, tmax, tenter);
+#endif
+	x0 = real_mul(n->bounds[r->near_x].x - r->origin.x, r->inv.x);
+	x1 = real_mul(n->bounds[!r->near_x].x - r->origin.x, r->inv.x);
+	y0 = real_mul(n->bounds[r->near_y].y - r->origin.y, r->inv.y);
+	y1 = real_mul(n->bounds[!r->near_y].y - r->origin.y, r->inv.y);
+	z0 = real_mul(n->bounds[r->near_z].z - r->origin.z, r->inv.z);
+	z1 = real_mul(n->bounds[!r->near_z].z - r->origin.z, r->inv.z);
 	tnear = x0 > tnear ? x0 : tnear;
 	tnear = y0 > tnear ? y0 : tnear;
 	tnear = z0 > tnear ? z0 : tnear;
@@ -383,6 +432,11 @@ static inline real traverse(const scene *s, const ray *r, int skip, real tmax, h
 	sr.near_x = sr.inv.x < REAL_C(0.0);
 	sr.near_y = sr.inv.y < REAL_C(0.0);
 	sr.near_z = sr.inv.z < REAL_C(0.0);
+#if REAL_FIXED
+	sr.dir = r->dir;
+	sr.divided = !(real_fabs(sr.inv.x) < RECIPROCAL_LIMIT && real_fabs(sr.inv.y) < RECIPROCAL_LIMIT &&
+		       real_fabs(sr.inv.z) < RECIPROCAL_LIMIT);
+#endif
 	if (s->bvh_node_count && box_hit(&s->bvh_nodes[0], &sr, tmax, &enter)) {
 		stack[0].node = 0;
 		stack[0].enter = enter;

@@ -53,7 +53,7 @@ int main(int argc, char **argv)
 		{"sphere", suite_sphere},         {"hedron", suite_hedron}, {"polygon", suite_polygon},
 		{"cone", suite_cone},             {"optics", suite_optics}, {"properties", suite_properties},
 		{"parse", suite_parse},           {"image", suite_image},   {"output", suite_output},
-		{"fixed", suite_fixed},           {"camera", suite_camera},
+		{"fixed", suite_fixed},           {"camera", suite_camera}, {"bvh", suite_bvh},
 	};
 	size_t i;
 	for (i = 0; i < sizeof suites / sizeof suites[0]; i++)
