@@ -5,12 +5,14 @@
 
 #if REAL_FIXED
 /* axis half_width / width, the step of half a pixel along a camera axis, rounded to
- * 2^-32, in Q32.32: Q2.30 times Q16.16 is Q18.46, 14 bits more. It is below 2^47 (half_width
- * is below 2^15), and times a coordinate of at most twice the image size (2^14) the sums
- * stay far inside 64 bits, for any angle. */
-static real2 image_plane_step(unit axis, real half_width, int width)
+ * 2^-32, in Q32.32, from half_width = sin / cos of half the angle (Q4.28): Q2.30 times
+ * Q4.28 times 4 is Q2.60 (below 2^61), over cos (Q4.28) times the width. A narrow view's
+ * steps keep their precision this way: from a Q16.16 half_width they kept 4 bits at 0.007
+ * degrees. Times a coordinate of at most twice the image size (2^14) the sums stay far
+ * inside 64 bits, for any angle. */
+static real2 image_plane_step(const camera *c, unit axis)
 {
-	return fixed_round_div(fixed_wide_mul(axis, half_width), (int64_t)width << 14);
+	return fixed_round_div((int64_t)axis * c->half_sin * 4, (int64_t)c->half_cos * c->width);
 }
 
 #endif
@@ -30,28 +32,39 @@ const char *camera_init(camera *c, const view *v, int width, int height)
 	c->right = dir_renormalize(right);
 	c->up = dir_cross(c->right, c->forward);
 	c->eye = v->from;
-	c->half_width = real_tan_degrees(real_mul(v->angle, REAL_C(0.5)));
 	c->width = width;
 	c->height = height;
 #if REAL_FIXED
+	fixed_sin_cos_half_angle(v->angle, &c->half_sin, &c->half_cos);
+	c->half_width = c->half_cos > 0 ? fixed_round_div_sat((int64_t)c->half_sin * 65536, c->half_cos)
+					: FIXED_MAX;
 	{
-		const unit right_axis[3] = {c->right.x, c->right.y, c->right.z};
-		const unit up_axis[3] = {c->up.x, c->up.y, c->up.z};
-		int i;
+		const unit axes[6] = {c->right.x, c->right.y, c->right.z, c->up.x, c->up.y, c->up.z};
+		int i, larger = width > height ? width : height;
 		/* The image plane's corners are at most half_width max(width, height) / width
-		 * from its centre: past 4096 (a view of over 179.97 degrees on a square image) the
-		 * eye rays' unnormalised directions would reach 2^13 and their squared lengths
-		 * crowd 64 bits (numbers beyond what this type holds, as fixed_can_represent
-		 * refuses scenes). */
-		if ((int64_t)c->half_width * (width > height ? width : height) >
-		    (int64_t)4096 * 65536 * width)
-			return "the view angle is too wide for " REAL_NAME " at this image size";
-		for (i = 0; i < 3; i++) {
-			c->right_step[i] = image_plane_step(right_axis[i], c->half_width, width);
-			c->up_step[i] = image_plane_step(up_axis[i], c->half_width, width);
-		}
+		 * from its centre. Refused: past 4096 (a view of over 179.97 degrees on a square
+		 * image), where the eye rays' unnormalised directions would reach 2^13 and their
+		 * squared lengths crowd 64 bits (numbers beyond what this type holds, as
+		 * fixed_can_represent refuses scenes); and an angle below max(width, height) LSB
+		 * (0.002 degrees at 129 pixels), whose own rounding (it is Q16.16 degrees, good to
+		 * half an LSB) moves the image's edge by more than a quarter of a pixel. */
+		int64_t reach = (int64_t)c->half_width * larger;
+		if (reach > (int64_t)4096 * 65536 * width || v->angle < larger)
+			return "the view angle does not fit " REAL_NAME " at this image size";
+		/* An eye ray's direction before normalising, forward + u right + v up, has
+		 * components below 1 + 2 reach / width. It is rounded to keep them below 2^29
+		 * with the fewest bits dropped (the bound times the width against 2^29 times the
+		 * width): Q16.16 (16 bits dropped) held a narrow view's u and v to a few bits,
+		 * and its rays missed by whole tiles. */
+		reach = (int64_t)(FIXED_ONE + 1) * width + 2 * reach;
+		c->ray_bits = 16;
+		while (c->ray_bits > 2 && reach << (17 - c->ray_bits) < (int64_t)width << 29)
+			c->ray_bits--;
+		for (i = 0; i < 6; i++)
+			c->step[i] = image_plane_step(c, axes[i]);
 	}
 #else
+	c->half_width = real_tan_degrees(real_mul(v->angle, REAL_C(0.5)));
 	c->per_width = real_reciprocal_of(real_from_int(width));
 #endif
 	return NULL;
@@ -89,8 +102,8 @@ camera_line camera_line_at(const camera *c, int y2, int x2)
 		int i;
 		for (i = 0; i < 3; i++) {
 			line.sum[i] = (real2)forward[i] * 4 + /* Q2.30 to Q32.32 */
-				      c->up_step[i] * (c->height - y2) + c->right_step[i] * (x2 - c->width);
-			line.step[i] = c->right_step[i] * 2;
+				      c->step[3 + i] * (c->height - y2) + c->step[i] * (x2 - c->width);
+			line.step[i] = c->step[i] * 2;
 		}
 	}
 #else
@@ -115,8 +128,10 @@ void camera_next_ray(camera_line *line, ray *r)
 		int i;
 		real p[3];
 		for (i = 0; i < 3; i++) {
-			/* Rounded to Q16.16 for normalising (in 32-bit halves: no 64-bit shift). */
-			p[i] = fixed_round_parts((uint32_t)line->sum[i], (int32_t)(line->sum[i] >> 32), 16);
+			/* Rounded for normalising, ray_bits dropped (in 32-bit halves: no 64-bit
+			 * shift). */
+			p[i] = fixed_round_parts((uint32_t)line->sum[i], (int32_t)(line->sum[i] >> 32),
+						 c->ray_bits);
 			line->sum[i] += line->step[i];
 		}
 		d = vec_make(p[0], p[1], p[2]);

@@ -11,9 +11,15 @@ typedef struct {
 	real half_width;         /* tan(angle / 2): half the image plane at unit distance */
 	int width, height;
 #if REAL_FIXED
-	/* right and up times half_width / width: their steps per half pixel on the image
-	 * plane, in Q32.32 (camera.c). */
-	real2 right_step[3], up_step[3];
+	/* sin and cos of angle / 2 in Q4.28, whose quotient is tan(angle / 2) to full
+	 * precision for narrow views */
+	int32_t half_sin, half_cos;
+	/* The bits an eye ray's Q32.32 direction drops before it is normalised: as few as
+	 * keep its components below 2^29 (camera.c) */
+	int ray_bits;
+	/* right (step[0 .. 2]) and up (step[3 .. 5]) times half_width / width: their steps
+	 * per half pixel on the image plane, in Q32.32 (camera.c). */
+	real2 step[6];
 #else
 	real_reciprocal per_width; /* for dividing by the width: once here, not per ray */
 #endif
@@ -21,7 +27,7 @@ typedef struct {
 
 /* Sets up the camera for a width x height image. Returns NULL, or what is wrong: a
  * degenerate view (from = at, or up parallel to the view direction), or in fixed point
- * one too wide for the image's size. */
+ * one too wide or too narrow for the image's size. */
 const char *camera_init(camera *c, const view *v, int width, int height);
 
 /* The eye rays of one image line, left to right: camera_line_at makes it for the line y2

@@ -276,12 +276,12 @@ int32_t fixed_pow(int32_t x, int32_t y)
  * (pi / 180 in Q16.16 keeps only 11 bits: a field of view 1.8e-4 too wide.) */
 #define RADIANS_PER_DEGREE_Q44 INT64_C(307041569098)
 
-int32_t fixed_tan_degrees(int32_t degrees)
+void fixed_sin_cos_half_angle(int32_t degrees, int32_t *sine, int32_t *cosine)
 {
 	/* sin and cos by their nested Taylor series in Q4.28 (x^2 reaches 2.47 at pi/2);
-	 * degrees < 90 keep the product below 2^61. */
-	int64_t t = fixed_round_div((int64_t)degrees * RADIANS_PER_DEGREE_Q44, INT64_C(1) << 32);
-	int64_t t2 = t * t >> 28, series[2], s, c;
+	 * degrees < 180 keep the product below 2^62. */
+	int64_t t = fixed_round_div((int64_t)degrees * RADIANS_PER_DEGREE_Q44, INT64_C(1) << 33);
+	int64_t t2 = t * t >> 28, series[2];
 	int k;
 	/* Both series in one loop (one copy of its 64-bit arithmetic): series[k & 1], the
 	 * cosine's for the even k (16 to 2), the sine's for the odd k (15 to 3). */
@@ -289,11 +289,17 @@ int32_t fixed_tan_degrees(int32_t degrees)
 	for (k = 16; k >= 2; k--)
 		series[k & 1] = ((int64_t)1 << 28) -
 				fixed_div64(t2 * series[k & 1] >> 28, k * (k - 1));
-	s = t * series[1] >> 28;
-	c = series[0];
+	*sine = (int32_t)(t * series[1] >> 28);
+	*cosine = (int32_t)series[0];
+}
+
+int32_t fixed_tan_degrees(int32_t degrees)
+{
+	int32_t s, c;
+	fixed_sin_cos_half_angle(degrees * 2, &s, &c);
 	if (c <= 0)
 		return FIXED_MAX;
-	return fixed_saturate(fixed_round_div(s * 65536, c));
+	return fixed_saturate(fixed_round_div((int64_t)s * 65536, c));
 }
 
 /* Mantissas keep 18 significant digits (below 2^60). */

@@ -234,7 +234,7 @@ FIXED_PARTS int64_t fixed_join_parts(uint32_t low, int32_t high)
 /* fixed_saturate(((high << 32) + low + 2^(bits - 1)) >> bits), in 32-bit steps (no 64-bit
  * shift and no call): bits = 16 rounds a Q32.32 value to Q16.16; bits = 30 rounds a product
  * with a Q2.30 factor (Q4.60, or Q18.46 for a Q16.16 one) back to its other factor's
- * format. bits is a constant at every call (16 or 30). */
+ * format. bits is a constant at most calls (16 or 30); eye rays drop 2 to 16 (camera.c). */
 FIXED_PARTS int32_t fixed_round_parts(uint32_t low, int32_t high, int bits)
 {
 	uint32_t half = (uint32_t)1 << (bits - 1);
@@ -691,6 +691,9 @@ int32_t fixed_sqrt_by_reciprocal(int64_t w, fixed_reciprocal r);
 int32_t fixed_exp(int32_t x);       /* e^x */
 int32_t fixed_pow(int32_t x, int32_t y); /* x^y for 0 <= x <= 1, y >= 0 */
 int32_t fixed_tan_degrees(int32_t degrees); /* tan for 0 <= degrees < 90 */
+/* sin and cos of degrees / 2 for 0 <= degrees < 180, in Q4.28: their quotient keeps a
+ * narrow view's tangent to full precision, where Q16.16 keeps 4 bits at 0.0035 degrees. */
+void fixed_sin_cos_half_angle(int32_t degrees, int32_t *sine, int32_t *cosine);
 
 /* Reads a decimal number (sign, digits, point, exponent) as Q16.16 times 2^shift,
  * rounded; *end is set after the last character used (to s when there is no number).

@@ -350,12 +350,14 @@ def newell(verts):
 # scene units, with X(tau) = Of + tau Df for the same tau.
 
 class Ray:
-    __slots__ = ('O', 'w', 'D', 'Of', 'Df', 'dlen', 'tmax')
+    __slots__ = ('O', 'w', 'D', 'Of', 'Df', 'dlen', 'edlen', 'tmax')
 
-    def __init__(self, O, w, D, Of, Df, tmax=None):
+    def __init__(self, O, w, D, Of, Df, LS, tmax=None):
         self.O, self.w, self.D, self.Of, self.Df = O, w, D, Of, Df
-        self.dlen = norm(Df)
-        self.tmax = tmax  # None: a ray; 1: a segment to tau = 1
+        self.dlen = norm(Df)   # scene units per unit of the float tau
+        # scene units per unit of the exact tau
+        self.edlen = norm(tuple(float(Fraction(c, w * LS)) for c in D))
+        self.tmax = tmax  # None: a ray; 1: a segment to tau = 1 (both taus agree then)
 
 
 class Result:
@@ -459,7 +461,7 @@ class World:
             den = den * x.denominator // math.gcd(den, x.denominator)
         D = tuple(int(x * den) for x in fr)
         Df = fnormalize(tuple(float(x) for x in d))
-        return Ray(self.E, 1, D, self.Ef, Df)
+        return Ray(self.E, 1, D, self.Ef, Df, self.LS)
 
     def offset_ray(self, base, du, dv):
         """A ray from the eye along base.Df + du right + dv up (float direction, exact ints)."""
@@ -467,7 +469,7 @@ class World:
         m = maxabs(d)
         D = tuple(int(round(x / m * (1 << 62))) for x in d)
         Df = fnormalize(tuple(float(x) for x in D))
-        return Ray(self.E, 1, D, self.Ef, Df)
+        return Ray(self.E, 1, D, self.Ef, Df, self.LS)
 
     def pixel_box(self, pts):
         """Conservative pixel ranges (i0, i1, j0, j1) holding the projections of pts, or None."""
@@ -521,10 +523,10 @@ def _tau_ok_float(tau, ray, S):
 
 def _tau_ok_exact(tau, ray, S):
     """(inside, ambiguous) for an exact tau against 0 < tau < tmax."""
-    dl = ray.dlen * float(abs(tau))
+    dl = ray.edlen * float(abs(tau))
     inside = tau > 0 and (ray.tmax is None or tau < ray.tmax)
     amb = dl < EPS * S
-    if ray.tmax is not None and abs(float(ray.tmax - tau)) * ray.dlen < EPS * S:
+    if ray.tmax is not None and abs(float(ray.tmax - tau)) * ray.edlen < EPS * S:
         amb = True
     return inside, amb
 
@@ -591,7 +593,7 @@ class Polygon:
         Nn = norm(tuple(float(c) for c in N))
         cosf = abs(float(nd)) / (Nn * norm(tuple(float(c) for c in ray.D)))
         if nd == 0:
-            return Result(False, amb=True) if ray.tmax is None else Result(False, amb=True)
+            return Result(False, amb=True)
         if nd > 0 and not self.two_sided and ray.tmax is None:
             return Result(False, amb=cosf < EPS)
         num = ray.w * self.offset_num - self.n * dot(N, ray.O)
@@ -601,9 +603,7 @@ class Polygon:
         tau = Fraction(num, den)
         Q = add(scale(ray.O, den), scale(ray.D, num))
         Wt = ray.w * den
-        LS = None  # float point in scene units below
-        X = tuple(q / Wt for q in Q)  # in LS units (float)
-        inside_t, amb_t = _tau_ok_exact(tau, ray, 1.0)  # placeholder S, redone below
+        X = tuple(q / Wt for q in Q)  # in LS units (float, correctly rounded)
         # exact even-odd test, everything times Wt
         p = proj(Q, self.axis)
         inside = False
@@ -620,9 +620,9 @@ class Polygon:
 
     def _finish(self, ray, tau, Q, Wt, X, inside, cosf):
         # distances in scene units: X is in LS units; uvf and the ray floats in scene units
-        LSf = self._LSf(ray)
+        LSf = self.LSf
         Xs = (X[0] / LSf, X[1] / LSf, X[2] / LSf)
-        dist = abs(float(tau)) * ray.dlen
+        dist = abs(float(tau)) * ray.edlen
         S = max(maxabs(ray.Of), maxabs(Xs), dist, self.size * 1e-3)
         inside_t, amb_t = _tau_ok_exact(tau, ray, S)
         p = proj(Xs, self.axis)
@@ -634,9 +634,6 @@ class Polygon:
         amb = amb_t or mind < EPS * S or cosf < EPS
         n = self.Nf
         return Result(inside and inside_t, tau, amb, Q, Wt, n, dist, S)
-
-    def _LSf(self, ray):
-        return self.LSf
 
 
 class Sphere:
@@ -713,7 +710,7 @@ class Sphere:
                 Wt = ray.w * tau.denominator
                 Xs = tuple(float(Fraction(q, Wt)) / LSf for q in Q)
                 n = fnormalize(sub(Xs, self.Cf))
-                return Result(True, tau, amb, Q, Wt, n, float(tau) * ray.dlen, S)
+                return Result(True, tau, amb, Q, Wt, n, float(tau) * ray.edlen, S)
         return Result(False, amb=amb, scale=S)
 
 
@@ -759,7 +756,7 @@ class Plane:
         Wt = ray.w * den
         LSf = self.LSf
         Xs = tuple(float(Fraction(q, Wt)) / LSf for q in Q)
-        dist = abs(float(tau)) * ray.dlen
+        dist = abs(float(tau)) * ray.edlen
         S = max(maxabs(ray.Of), maxabs(Xs), dist, self.size)
         inside_t, amb_t = _tau_ok_exact(tau, ray, S)
         return Result(inside_t, tau, amb_t or cosf < EPS, Q, Wt, self.Nf, dist, S)
@@ -881,7 +878,7 @@ class Hedron:
                 continue
             Xs = tuple((ray.O[c] + t * ray.D[c]) / ray.w / LSf for c in range(3))
             Xs = tuple(float(x) for x in Xs)
-            S2 = max(S, abs(float(t)) * ray.dlen, maxabs(Xs))
+            S2 = max(S, abs(float(t)) * ray.edlen, maxabs(Xs))
             if abs(self._margin(Xs, k)) < EPS * S2:
                 amb = True
             inside_t, amb_t = _tau_ok_exact(t, ray, S2)
@@ -892,7 +889,7 @@ class Hedron:
         tau, k = hit
         Q = add(scale(ray.O, tau.denominator), scale(ray.D, tau.numerator))
         Wt = ray.w * tau.denominator
-        return Result(True, tau, amb, Q, Wt, self.planesf[k][0], float(tau) * ray.dlen, S)
+        return Result(True, tau, amb, Q, Wt, self.planesf[k][0], float(tau) * ray.edlen, S)
 
 
 # ---- the per-pixel decision ---------------------------------------------------------
@@ -953,7 +950,7 @@ def nearest_set(world, ray, entries):
             if e.status == 'amb':
                 acc.append(e)
             continue
-        if float(e.ex.tau - tau_n) * ray.dlen <= EPS * S:
+        if float(e.ex.tau - tau_n) * ray.edlen <= EPS * S:
             acc.append(e)
     return acc, near
 
@@ -969,7 +966,6 @@ def first_hit_strict(world, ray, cands):
         if code == 0:
             continue
         if code == 1:
-            ex_tau = None
             d = tau * ray.dlen
         else:
             ex = o.exact(ray)
@@ -1018,7 +1014,7 @@ def segment_blocked(world, P_Q, P_W, Pf, light, skip):
     w = P_W
     D = tuple(w * Li[c] - O[c] for c in range(3))
     Df = sub(Lf, Pf)
-    ray = Ray(O, w, D, Pf, Df, tmax=1)
+    ray = Ray(O, w, D, Pf, Df, world.LS, tmax=1)
     lo = tuple(min(Pf[c], Lf[c]) for c in range(3))
     hi = tuple(max(Pf[c], Lf[c]) for c in range(3))
     amb = False

@@ -4,6 +4,7 @@
  * See LICENSE for copyright and licence. */
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "camera.h"
 #include "intersect.h"
@@ -25,12 +26,11 @@ static void basis(const camera *c, double f[3], double r[3], double u[3])
 }
 
 /* Every ray of an image (pixel centres) and of its corner lines, against
- * normalize(forward + u right + v up) from the same basis in double: within 2^-16 in
- * fixed point (the direction is summed to Q16.16 once before it is normalised), a few
- * ulps in floating point. And each ray lies in its line's plane. */
-static void eye_rays(real angle, int width, int height)
+ * normalize(forward + u right + v up) from the same basis in double, with u and v from
+ * the true tan(angle / 2): within `tolerance`. And each ray lies in its line's plane. */
+static void eye_rays(real angle, int width, int height, double tolerance, double plane_tolerance)
 {
-	static const double tol[] = {TOL3(4e-7, 1e-15, 1.0 / 65536.0)};
+	const double tol[] = {tolerance, plane_tolerance};
 	view v;
 	camera c;
 	double f[3], r[3], u[3], hw, worst = 0.0, worst_plane = 0.0;
@@ -45,7 +45,10 @@ static void eye_rays(real angle, int width, int height)
 	if (!CHECK(camera_init(&c, &v, width, height) == NULL))
 		return;
 	basis(&c, f, r, u);
-	hw = test_double(c.half_width);
+	/* Floating point's own tangent (near 90 degrees a rounding of the angle moves it far);
+	 * fixed point's from the angle in double. */
+	hw = REAL_FIXED ? tan(test_double(angle) * 3.14159265358979323846 / 360.0)
+			: test_double(c.half_width);
 	for (corners = 0; corners < 2; corners++) {
 		for (y = 0; y < height + corners; y++) {
 			int y2 = 2 * y + !corners;
@@ -78,16 +81,45 @@ static void eye_rays(real angle, int width, int height)
 	}
 	CHECK(from_eye);
 	CHECK_NEAR(worst, 0.0, tol[0]);
-	CHECK_NEAR(worst_plane, 0.0, 2.0 * tol[0]);
+	CHECK_NEAR(worst_plane, 0.0, tol[1]);
 }
 
-/* An ordinary view, and one of 179.5 degrees (half width 229) on a wide image, where a
+/* An ordinary view, one of 179.5 degrees (half width 229) on a wide image, where a
  * line's plane taken from a v rounded before it was scaled by the half width tilted by
- * 2^-9. */
+ * 2^-9, and a telephoto of 0.007 degrees, whose rays must be good to a small part of its
+ * pixels (9.5e-7 across): fixed point once rounded its tangent to 4 bits and its rays'
+ * directions to Q16.16 (2^-16, 16 pixels). Floating point is good to a few ulps (float
+ * to an eighth of a pixel at 0.007 degrees), fixed point to 2^-16 when the view is wide
+ * (it rounds the sums that wide rays need to Q16.16), to a 32nd of a pixel at 0.007
+ * degrees. The planes of the lines, which only leave out spheres that they miss by 2^-10
+ * of their distance (intersect.c), are good to 2^-15 in fixed point: their v is Q16.16. */
 static void test_eye_rays(void)
 {
-	eye_rays(REAL_C(64.0), 37, 23);
-	eye_rays(REAL_C(179.5), 999, 5);
+	const double wide = TOL3(4e-7, 1e-15, 1.0 / 65536.0);
+	eye_rays(REAL_C(64.0), 37, 23, wide, 2.0 * wide);
+	eye_rays(REAL_C(179.5), 999, 5, wide, 2.0 * wide);
+	eye_rays(REAL_C(0.007), 129, 129, TOL3(9.5e-7 / 8.0, 1e-15, 9.5e-7 / 32.0),
+		 TOL3(8e-7, 2e-15, 2.0 / 65536.0));
+}
+
+/* A view so narrow that the angle's own rounding moves the image by more than a quarter
+ * of a pixel is refused in fixed point (the angle is Q16.16 degrees: 0.001 degrees is 66
+ * LSB, and the image 129 wide), taken in floating point. */
+static void test_too_narrow(void)
+{
+	view v;
+	camera c;
+	const char *why;
+	v.from = VEC_C(0.0, 0.0, 0.0);
+	v.at = VEC_C(0.0, 1.0, 0.0);
+	v.up = VEC_C(0.0, 0.0, 1.0);
+	v.angle = REAL_C(0.001);
+	v.hither = REAL_C(0.0);
+	v.width = v.height = 129;
+	why = camera_init(&c, &v, 129, 129);
+	CHECK((why != NULL) == REAL_FIXED);
+	CHECK(why == NULL || strstr(why, "does not fit") != NULL);
+	CHECK(camera_init(&c, &v, 16, 16) == NULL); /* 66 LSB: fine at 16 */
 }
 
 /* Spheres near the planes of an image's lines: origin_terms_plane may leave a sphere out
@@ -163,4 +195,5 @@ void suite_camera(void)
 	test_eye_rays();
 	test_line_culling();
 	test_too_wide();
+	test_too_narrow();
 }
