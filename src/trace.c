@@ -192,18 +192,8 @@ static vec3 shade_lights(tracer *t, const ray *r, departure *from, const materia
 			sum = vec_add(sum, lit);
 			continue;
 		}
-		/* The shadow segment runs from the point the ray starts at, off the surface, to
-		 * the light: taken from the hit point instead, it ended beside the light (at the
-		 * light plus the offset), and a light closer to a surface than the offset was
-		 * falsely shadowed by it. */
 		shadow.origin = departure_point(from);
-		to_light = vec_sub(l->position, shadow.origin);
-		distance2 = vec_dot2(to_light, to_light);
-		if (!(distance2 > 0))
-			continue;
-		per_distance = real2_reciprocal_sqrt(distance2);
-		distance = real2_sqrt_by(distance2, per_distance);
-		shadow.dir = dir_times_reciprocal(to_light, per_distance);
+		shadow.dir = dir;
 		t->stats.shadow_rays++;
 		{
 			int *cached = &t->last_blocker[level - 1][i];
