@@ -21,39 +21,51 @@
 # but which rt shows at its ambient-only colour (black with `ambient 0`). A false light is
 # a pixel every light of which is clearly facing away or clearly blocked by an opaque
 # object, on a material without mirror or transmission, that rt shows brighter than that.
-# -v lists the first wrong pixels and prints the running time on standard error.
-# Exit status 0, or 2 when an input cannot be read or uses what the oracle does not model
-# (cones, transmitting objects in a shadow check). See LICENSE for copyright and licence.
+# A light through a transmitting object, or grazing the surface (|cosine| <= 1e-3), gets
+# no verdict; a pixel is judged only when its first hit is certain and rt agrees with it.
+# -v lists the first wrong pixels (with every object tested and its status) and the first
+# false shadows and lights, and prints the running time on standard error.
+# Exit status 0, or 2 when an input cannot be read, does not match the scene's size, or
+# uses what the oracle does not model (cones). See LICENSE for copyright and licence.
 #
 # How it decides. The camera follows src/camera.c: forward = normalize(at - from),
 # right = normalize(forward x up), up' = right x forward, and pixel (i, j) (row 0 at the
 # top) looks along forward + u right + v up' with u = (2i + 1 - W) / W tan(angle / 2) and
 # v = (H - 2j - 1) / W tan(angle / 2). That direction is computed in `decimal` at 50
-# digits and then taken as an exact rational. Scene numbers are read as exact rationals
-# (fractions.Fraction) and scaled by their common denominator to integers, so every
-# plane and polygon test below is exact integer (that is, rational) arithmetic; sphere
-# hits need a square root, taken with math.isqrt to 200 bits.
+# digits (tan by its series, pi by Machin's formula) and then taken as an exact rational.
+# The scene's numbers are read as exact rationals (fractions.Fraction; rt's own reading
+# rounds them, the oracle's does not) and scaled by their common denominator to integers,
+# so every plane, polygon and polyhedron test is exact rational arithmetic, done on
+# integers; sphere hits need a square root, taken with math.isqrt to 2^-200.
 #
 #   * polygon (p, pp): the plane of the Newell normal through the vertices' centroid (as
-#     rt has it), the hit point projected by dropping the normal's largest axis, inside by
-#     the even-odd rule. Opaque `p` are one-sided (seen only from the side where the
-#     vertices run counter-clockwise); `pp` and transmitting polygons are two-sided.
-#   * sphere: both roots, the near one unless the radius is negative (inside only).
+#     rt has it, so non-planar input means what it means to rt), the hit point projected by
+#     dropping the normal's largest axis, inside by the even-odd rule. Opaque `p` are
+#     one-sided (seen only from the side where the vertices run counter-clockwise); `pp`
+#     and transmitting polygons are two-sided; shadow rays are blocked from either side.
+#   * sphere: the near root, or the far one from inside or for a negative radius.
 #   * plane: two-sided. box and polyhedron: the t-interval of the half-spaces.
+#   Objects rt skips (radius 0, zero area, zero thickness) are skipped and not numbered.
 #
 # An object is AMBIGUOUS for a ray when the ideal ray passes within EPS (1e-12) times the
 # local scale (the largest of |eye|, |hit point| and the distance, in scene units) of its
 # boundary: a polygon edge or vertex, a sphere's silhouette, a box edge, or meets its
-# plane edge-on. Hit and miss are then both acceptable. Accepted ids:
-#   * if some object is hit for certain, at distance t: every hit or ambiguous object no
-#     farther than t (within EPS relative);
-#   * if not: every ambiguous object, plus whatever the ray meets when it is moved off
-#     them (16 rays displaced by 1e-8 of the scale in directions round the pixel's ray,
-#     evaluated exactly): so a ray exactly along an edge shared by two tiles accepts
-#     either tile but not the background behind them (a crack), while a ray along the
-#     outer edge of a surface or a sphere's silhouette accepts the background too.
-# A fast floating-point pass decides every test whose margin is over 1e-9 of the scale
-# (far above double's rounding); everything closer is decided by the exact path.
+# plane edge-on; hit and miss are then both acceptable. Accepted ids:
+#   * with a certain hit at distance t and nothing ambiguous in front of it: the objects
+#     hit or ambiguous at t (within EPS relative: coplanar or touching objects);
+#   * with ambiguous objects in front (or no certain hit at all): those objects, plus
+#     whatever the ray meets when it is moved off them: 16 rays displaced by 1e-8 of the
+#     scale in directions round the pixel's ray, each evaluated without ambiguity. So a
+#     ray exactly along an edge shared by two tiles accepts either tile but not what lies
+#     behind them (a crack is wrong), while a ray along the outer edge of a surface or a
+#     sphere's silhouette accepts what is behind too.
+# Shadow segments run from the exact hit point to the light (0 < tau < 1) and are judged
+# the same way, with the surface hit excluded (a flat or convex surface cannot shadow
+# itself from a light it faces) and a plane that the segment only touches at its start
+# (a coplanar neighbour, a floor at a wall's foot) not counted as blocking.
+# A floating-point pass decides every test whose margin is over 1e-9 of the scale (far
+# above double's rounding: the decision cannot change); everything closer is decided on
+# the exact path. Per pixel only the objects whose projected bounds cover it are tested.
 import argparse
 import math
 import os
@@ -371,11 +383,6 @@ class Result:
         self.Q, self.W, self.normal, self.dist, self.scale = Q, W, normal, dist, scale
 
 
-def point_float(Q, W, LS):
-    d = W * LS
-    return (Q[0] / d, Q[1] / d, Q[2] / d)
-
-
 class World:
     def __init__(self, sc):
         self.sc = sc
@@ -567,6 +574,9 @@ class Polygon:
         X = add(ray.Of, scale(ray.Df, tau))
         S = max(maxabs(ray.Of), maxabs(X), abs(tau) * ray.dlen, self.size * 1e-3)
         ok = _tau_ok_float(tau, ray, S)
+        if ok == 2 and ray.tmax is not None and \
+           ray.w * self.offset_num == self.n * dot(self.N, ray.O):
+            return 0, None   # a segment starting exactly in the plane (see exact)
         if ok != 1:
             return ok, None
         p = proj(X, self.axis)
@@ -597,6 +607,9 @@ class Polygon:
         if nd > 0 and not self.two_sided and ray.tmax is None:
             return Result(False, amb=cosf < EPS)
         num = ray.w * self.offset_num - self.n * dot(N, ray.O)
+        if num == 0 and ray.tmax is not None:
+            # a segment starting in the plane leaves it at once: it touches, never crosses
+            return Result(False)
         den = self.n * nd
         if den < 0:
             num, den = -num, -den
@@ -624,6 +637,9 @@ class Polygon:
         Xs = (X[0] / LSf, X[1] / LSf, X[2] / LSf)
         dist = abs(float(tau)) * ray.edlen
         S = max(maxabs(ray.Of), maxabs(Xs), dist, self.size * 1e-3)
+        if ray.tmax is not None and dist < EPS * S:
+            # a segment leaving (a point within EPS of) the plane crosses it nowhere else
+            return Result(False)
         inside_t, amb_t = _tau_ok_exact(tau, ray, S)
         p = proj(Xs, self.axis)
         mind = float('inf')
@@ -692,7 +708,8 @@ class Sphere:
         S = max(maxabs(ray.Of), self.size, abs(b_s) + self.rf)
         amb = abs(gap) < EPS * S
         if disc < 0:
-            return Result(False, amb=amb, scale=S)
+            # a near miss is ambiguous at the ray's closest approach to the centre
+            return Result(False, amb=amb, scale=S, dist=max(-b_s, 0.0))
         sq = isqrt_frac(disc)
         roots = [(-b - sq) / a, (-b + sq) / a]
         if self.inside_only:
@@ -739,6 +756,8 @@ class Plane:
         X = add(ray.Of, scale(ray.Df, tau))
         S = max(maxabs(ray.Of), maxabs(X), abs(tau) * ray.dlen, self.size)
         ok = _tau_ok_float(tau, ray, S)
+        if ok == 2 and ray.tmax is not None and ray.w * self.off == dot(self.Ni, ray.O):
+            return 0, None
         return (ok, tau if ok == 1 else None)
 
     def exact(self, ray):
@@ -748,6 +767,8 @@ class Plane:
         if nd == 0:
             return Result(False, amb=True)
         num = ray.w * self.off - dot(self.Ni, ray.O)
+        if num == 0 and ray.tmax is not None:
+            return Result(False)
         den = nd
         if den < 0:
             num, den = -num, -den
@@ -758,6 +779,8 @@ class Plane:
         Xs = tuple(float(Fraction(q, Wt)) / LSf for q in Q)
         dist = abs(float(tau)) * ray.edlen
         S = max(maxabs(ray.Of), maxabs(Xs), dist, self.size)
+        if ray.tmax is not None and dist < EPS * S:
+            return Result(False)
         inside_t, amb_t = _tau_ok_exact(tau, ray, S)
         return Result(inside_t, tau, amb_t or cosf < EPS, Q, Wt, self.Nf, dist, S)
 
@@ -823,7 +846,7 @@ class Hedron:
                 g = max(g, dot(n, X) - d)
         return g
 
-    def _decide(self, t_in, k_in, t_out, k_out, ray, fl, S):
+    def _decide(self, t_in, k_in, t_out, k_out, ray):
         """Which t is the hit, if any: (tau, plane) or None; for floats and exact alike."""
         tmax = ray.tmax
         if t_in is not None and (t_out is None or t_in < t_out) and t_in > 0 and \
@@ -856,36 +879,39 @@ class Hedron:
                 return 2, None
             if ray.tmax is not None and abs(ray.tmax - t) * ray.dlen < CONF * S2:
                 return 2, None
-        hit = self._decide(t_in, k_in, t_out, k_out, ray, True, S)
+        hit = self._decide(t_in, k_in, t_out, k_out, ray)
         return (1, hit[0]) if hit else (0, None)
 
     def exact(self, ray):
         vals = []
         for n, d in self.planes:
             vals.append((Fraction(ray.w * d - dot(n, ray.O)), Fraction(dot(n, ray.D))))
-        LSf = self.LSf
         S = max(maxabs(ray.Of), self.size)
         amb = False
-        for (num, den), (nf, df) in zip(vals, self.planesf):
-            if den == 0 and abs(float(num) / ray.w / LSf) < EPS * max(S, 1.0):
+        for (num, den), (n, _) in zip(vals, self.planes):
+            # a ray parallel to a face, within EPS of its plane
+            if den == 0 and abs(float(num / (ray.w * self.LS))) / norm(n) < EPS * max(S, 1.0):
                 amb = True
         iv = self._interval(vals)
         if iv is None:
             return Result(False, amb=amb, scale=S)
         t_in, k_in, t_out, k_out = iv
+        near = None
         for t, k in ((t_in, k_in), (t_out, k_out)):
             if t is None:
                 continue
-            Xs = tuple((ray.O[c] + t * ray.D[c]) / ray.w / LSf for c in range(3))
-            Xs = tuple(float(x) for x in Xs)
-            S2 = max(S, abs(float(t)) * ray.edlen, maxabs(Xs))
+            Xs = tuple(float((ray.O[c] + t * ray.D[c]) / (ray.w * self.LS)) for c in range(3))
+            d = abs(float(t)) * ray.edlen
+            S2 = max(S, d, maxabs(Xs))
             if abs(self._margin(Xs, k)) < EPS * S2:
                 amb = True
-            inside_t, amb_t = _tau_ok_exact(t, ray, S2)
-            amb = amb or amb_t
-        hit = self._decide(t_in, k_in, t_out, k_out, ray, False, S)
+                if t > 0 and (near is None or d < near):
+                    near = d
+            amb = _tau_ok_exact(t, ray, S2)[1] or amb
+        hit = self._decide(t_in, k_in, t_out, k_out, ray)
         if not hit:
-            return Result(False, amb=amb, scale=S)
+            # a near miss is ambiguous where the ray passes the edge
+            return Result(False, amb=amb, scale=S, dist=near if near is not None else None)
         tau, k = hit
         Q = add(scale(ray.O, tau.denominator), scale(ray.D, tau.numerator))
         Wt = ray.w * tau.denominator
@@ -921,38 +947,15 @@ def evaluate(world, ray, cands):
     return out
 
 
-def nearest_set(world, ray, entries):
-    """Given entries, (acceptable object indices, certain) with `certain` the nearest certain
-    hit's Entry when there is one."""
-    hits = [e for e in entries if e.status == 'hit']
-    if not hits:
-        return None, None
-    tn = min(e.dist for e in hits)
-    window = [e for e in entries if e.dist <= tn * (1 + 1e-7) + 1e-300]
-    if len(window) == 1:
-        return [window[0]], window[0]
-    for e in window:
+def refine(world, ray, entries):
+    """Exact tests for the entries the float pass decided (for exact depth comparisons)."""
+    for e in entries:
         if e.ex is None:
             e.ex = world.objs[e.k].exact(ray)
             if e.ex.amb:
                 e.status = 'amb'
             elif not e.ex.inside:
                 raise AssertionError('float pass and exact test disagree')
-    hits = [e for e in window if e.status == 'hit']
-    if not hits:
-        return None, None
-    tau_n = min(e.ex.tau for e in hits)
-    near = [e for e in hits if e.ex.tau == tau_n][0]
-    S = max(e.ex.scale for e in window if e.ex.scale is not None)
-    acc = []
-    for e in window:
-        if e.ex.tau is None:
-            if e.status == 'amb':
-                acc.append(e)
-            continue
-        if float(e.ex.tau - tau_n) * ray.edlen <= EPS * S:
-            acc.append(e)
-    return acc, near
 
 
 def first_hit_strict(world, ray, cands):
@@ -981,21 +984,50 @@ def first_hit_strict(world, ray, cands):
 
 
 def classify_pixel(world, ray, cands):
-    """(acceptable ids as a set of rt ids, the certain Entry or None)."""
+    """(acceptable rt ids as a set, the certain Entry or None, the entries tested).
+
+    With a certain hit at depth t: the objects hit or ambiguous at t (within EPS). If some
+    ambiguous object lies in front of t, a ray past it may or may not reach t: the rays moved
+    off the ambiguous objects decide what lies behind them (a crack between two tiles in
+    front of a backdrop is then wrong, the backdrop beside a sphere's silhouette right).
+    Without a certain hit the same, with the background in place of t."""
     entries = evaluate(world, ray, cands)
-    acc, near = nearest_set(world, ray, entries)
-    if acc is not None:
+    hits = [e for e in entries if e.status == 'hit']
+    ambs = [e for e in entries if e.status == 'amb']
+    near = None
+    acc = []
+    front = ambs
+    if hits:
+        tn = min(e.dist for e in hits)
+        window = [e for e in entries if abs(e.dist - tn) <= tn * 1e-7]
+        if len(window) == 1:
+            near = window[0]
+            acc = window
+        else:
+            refine(world, ray, window)
+            whits = [e for e in window if e.status == 'hit']
+            if whits:
+                tau_n = min(e.ex.tau for e in whits)
+                near = [e for e in whits if e.ex.tau == tau_n][0]
+                S = max(e.ex.scale for e in window if e.ex.scale is not None)
+                acc = [e for e in window if e.ex.tau is not None and
+                       abs(float(e.ex.tau - tau_n)) * ray.edlen <= EPS * S]
+            else:
+                tn = min(e.dist for e in hits if e not in window) if len(hits) > len(window) \
+                    else float('inf')
+        front = [e for e in ambs if e not in acc and e.dist < tn]
+    if not front:
         ids = set(e.k + 1 for e in acc)
-        certain = near if len(acc) == 1 and acc[0].status == 'hit' else None
+        if not acc:
+            ids.add(0)
+        certain = near if near is not None and len(acc) == 1 and acc[0].status == 'hit' \
+            else None
         return ids, certain, entries
-    if not entries:
-        return {0}, None, entries
-    # only ambiguous objects: accept them and whatever rays moved off them meet
-    ids = set(e.k + 1 for e in entries)
-    dists = [e.dist for e in entries if e.dist not in (None, float('inf'))]
-    scales = [e.ex.scale for e in entries if e.ex is not None and e.ex.scale is not None]
-    d = min(dists) if dists else 1.0
-    S = max(scales) if scales else max(maxabs(ray.Of), 1.0)
+    # look past the ambiguous objects in front
+    ids = set(e.k + 1 for e in front)
+    d = min(e.dist for e in front)
+    S = max([e.ex.scale for e in front if e.ex is not None and e.ex.scale is not None] +
+            [maxabs(ray.Of), d])
     eps = PERTURB * S / max(d, 1e-300)
     for n in range(16):
         phi = 2 * math.pi * (n + 0.31) / 16
@@ -1029,7 +1061,9 @@ def segment_blocked(world, P_Q, P_W, Pf, light, skip):
         if code == 0:
             continue
         if o.mat.kt > 0:
-            raise OracleError('transmitting objects are not modelled in the shadow check')
+            # light through glass is dimmed, refracted shadows are not modelled: no verdict
+            amb = True
+            continue
         if code == 1:
             return 'blocked'
         ex = o.exact(ray)
@@ -1114,7 +1148,7 @@ def main(argv):
         print('oracle.py: %s' % e, file=sys.stderr)
         return 2
     for o in world.objs:
-        o.LSf = float(world.LS)
+        o.LS, o.LSf = world.LS, float(world.LS)
     world.setup_camera(W, H)
 
     # candidate objects per pixel, from their projected bounds
