@@ -32,9 +32,14 @@ static ray_frame frame_of(const ray *r)
 	ray_frame f;
 	unit ax = unit_fabs(r->dir.x), ay = unit_fabs(r->dir.y), az = unit_fabs(r->dir.z);
 	f.z = ax > ay ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
-	f.dx = f.z == 0 ? r->dir.y : f.z == 1 ? r->dir.z : r->dir.x;
-	f.dy = f.z == 0 ? r->dir.z : f.z == 1 ? r->dir.x : r->dir.y;
-	f.dz = f.z == 0 ? r->dir.x : f.z == 1 ? r->dir.y : r->dir.z;
+	{
+		/* The direction's axes in the same order (a unit vector's components go
+		 * through frame_axes as the numbers they are, in every type). */
+		vec3 d = frame_axes(vec_make(r->dir.x, r->dir.y, r->dir.z), f.z);
+		f.dx = d.x;
+		f.dy = d.y;
+		f.dz = d.z;
+	}
 	f.origin = frame_axes(r->origin, f.z);
 	f.v_origin = real_cross_unit(f.dz, f.origin.y, f.dy, f.origin.z);
 	return f;

@@ -102,20 +102,27 @@ static void test_eye_rays(void)
 		 TOL3(8e-7, 2e-15, 2.0 / 65536.0));
 }
 
+/* A view from the origin along +y, z up, of the given angle on a size x size image. */
+static view view_along_y(real angle, int size)
+{
+	view v;
+	v.from = VEC_C(0.0, 0.0, 0.0);
+	v.at = VEC_C(0.0, 1.0, 0.0);
+	v.up = VEC_C(0.0, 0.0, 1.0);
+	v.angle = angle;
+	v.hither = REAL_C(0.0);
+	v.width = v.height = size;
+	return v;
+}
+
 /* A view so narrow that the angle's own rounding moves the image by more than a quarter
  * of a pixel is refused in fixed point (the angle is Q16.16 degrees: 0.001 degrees is 66
  * LSB, and the image 129 wide), taken in floating point. */
 static void test_too_narrow(void)
 {
-	view v;
+	view v = view_along_y(REAL_C(0.001), 129);
 	camera c;
 	const char *why;
-	v.from = VEC_C(0.0, 0.0, 0.0);
-	v.at = VEC_C(0.0, 1.0, 0.0);
-	v.up = VEC_C(0.0, 0.0, 1.0);
-	v.angle = REAL_C(0.001);
-	v.hither = REAL_C(0.0);
-	v.width = v.height = 129;
 	why = camera_init(&c, &v, 129, 129);
 	CHECK((why != NULL) == REAL_FIXED);
 	CHECK(why == NULL || strstr(why, "does not fit") != NULL);
@@ -173,14 +180,8 @@ static void test_line_culling(void)
  * at 179.9 degrees an image 1 wide is taken up to 3 high, not 4. */
 static void test_too_wide(void)
 {
-	view v;
+	view v = view_along_y(REAL_C(179.99), 16);
 	camera c;
-	v.from = VEC_C(0.0, 0.0, 0.0);
-	v.at = VEC_C(0.0, 1.0, 0.0);
-	v.up = VEC_C(0.0, 0.0, 1.0);
-	v.angle = REAL_C(179.99);
-	v.hither = REAL_C(0.0);
-	v.width = v.height = 16;
 	CHECK((camera_init(&c, &v, 16, 16) != NULL) == REAL_FIXED); /* half width 11459 */
 	v.angle = REAL_C(179.9); /* half width 1146 */
 	CHECK(camera_init(&c, &v, 16, 16) == NULL);
