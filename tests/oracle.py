@@ -39,8 +39,10 @@
 # integers; sphere hits need a square root, taken with math.isqrt to 2^-200.
 #
 #   * polygon (p, pp): the plane of the Newell normal through the vertices' centroid (as
-#     rt has it, so non-planar input means what it means to rt), the hit point projected by
-#     dropping the normal's largest axis, inside by the even-odd rule. Opaque `p` are
+#     rt has it, so non-planar input means what it means to rt) gives the hit's distance;
+#     inside by the even-odd rule where the ray's line meets the vertex loop seen along
+#     the ray (rt's ray-frame test: for non-planar input it is what rt means by inside,
+#     and neighbours that share an edge share its test exactly). Opaque `p` are
 #     one-sided (seen only from the side where the vertices run counter-clockwise); `pp`
 #     and transmitting polygons are two-sided; shadow rays are blocked from either side.
 #   * sphere: the near root, or the far one from inside or for a negative radius.
@@ -123,15 +125,6 @@ def fnormalize(a):
     return (a[0] / n, a[1] / n, a[2] / n)
 
 
-def proj(p, axis):
-    """rt's polygon_project: drop `axis`, keeping (y, z), (z, x) or (x, y)."""
-    if axis == 0:
-        return (p[1], p[2])
-    if axis == 1:
-        return (p[2], p[0])
-    return (p[0], p[1])
-
-
 def seg_dist2d(p, a, b):
     """Distance from 2D point p to segment ab (floats)."""
     dx, dy = b[0] - a[0], b[1] - a[1]
@@ -140,6 +133,44 @@ def seg_dist2d(p, a, b):
     s = 0.0 if ll == 0 else max(0.0, min(1.0, (px * dx + py * dy) / ll))
     ex, ey = px - s * dx, py - s * dy
     return math.sqrt(ex * ex + ey * ey)
+
+
+def ray_basis(d):
+    """Two unit vectors (floats) perpendicular to d and to each other."""
+    dn = fnormalize(d)
+    a = (1.0, 0.0, 0.0) if abs(dn[0]) <= abs(dn[1]) and abs(dn[0]) <= abs(dn[2]) else \
+        ((0.0, 1.0, 0.0) if abs(dn[1]) <= abs(dn[2]) else (0.0, 0.0, 1.0))
+    u = fnormalize(cross(dn, a))
+    return u, cross(dn, u)
+
+
+def along_ray(points, origin, u, v):
+    """The points as seen along the ray (floats): their offsets from the origin in the
+    perpendicular basis u, v, in which the ray's line is the point (0, 0)."""
+    return [(dot(sub(p, origin), u), dot(sub(p, origin), v)) for p in points]
+
+
+def even_odd(loop, p):
+    """Is p inside the closed 2D loop (even-odd rule)? Exact for integer or Fraction input."""
+    inside = False
+    a = loop[-1]
+    for b in loop:
+        if (a[1] > p[1]) != (b[1] > p[1]):
+            c = (a[0] - p[0]) * (b[1] - a[1]) + (p[1] - a[1]) * (b[0] - a[0])
+            if (c > 0) == (b[1] > a[1]):
+                inside = not inside
+        a = b
+    return inside
+
+
+def loop_distance(loop, p):
+    """Distance from 2D point p to the closed loop's edges (floats)."""
+    mind = float('inf')
+    a = loop[-1]
+    for b in loop:
+        mind = min(mind, seg_dist2d(p, a, b))
+        a = b
+    return mind
 
 
 def isqrt_frac(n):
@@ -548,15 +579,11 @@ class Polygon:
         self.n = len(verts)
         self.sumV = tuple(sum(p[k] for p in self.Vi) for k in range(3))
         self.offset_num = dot(self.N, self.sumV)      # n N.X = N.sumV on the plane
-        a = [abs(c) for c in self.N]
-        self.axis = 0 if a[0] >= a[1] and a[0] >= a[2] else (1 if a[1] >= a[2] else 2)
-        self.uv = [proj(p, self.axis) for p in self.Vi]
         self.Vf = [tuple(float(x) for x in p) for p in verts]
         Nf = tuple(float(c) for c in newell(verts))
         self.Nf = fnormalize(Nf)
         cen = tuple(sum(p[k] for p in self.Vf) / self.n for k in range(3))
         self.df = dot(self.Nf, cen)
-        self.uvf = [proj(p, self.axis) for p in self.Vf]
         self.lo = tuple(min(p[k] for p in self.Vf) for k in range(3))
         self.hi = tuple(max(p[k] for p in self.Vf) for k in range(3))
         self.size = max(maxabs(p) for p in self.Vf)
@@ -579,23 +606,11 @@ class Polygon:
             return 0, None   # a segment starting exactly in the plane (see exact)
         if ok != 1:
             return ok, None
-        p = proj(X, self.axis)
-        uv = self.uvf
-        inside = False
-        mind = float('inf')
-        a = uv[-1]
-        for b in uv:
-            if (a[1] > p[1]) != (b[1] > p[1]):
-                c = (a[0] - p[0]) * (b[1] - a[1]) + (p[1] - a[1]) * (b[0] - a[0])
-                if (c > 0) == (b[1] > a[1]):
-                    inside = not inside
-            d = seg_dist2d(p, a, b)
-            if d < mind:
-                mind = d
-            a = b
-        if mind < CONF * S / cosf:
+        u, v = ray_basis(ray.Df)
+        loop = along_ray(self.Vf, ray.Of, u, v)
+        if loop_distance(loop, (0.0, 0.0)) < CONF * S:
             return 2, None
-        return (1, tau) if inside else (0, None)
+        return (1, tau) if even_odd(loop, (0.0, 0.0)) else (0, None)
 
     def exact(self, ray):
         N = self.N
@@ -617,18 +632,17 @@ class Polygon:
         Q = add(scale(ray.O, den), scale(ray.D, num))
         Wt = ray.w * den
         X = tuple(q / Wt for q in Q)  # in LS units (float, correctly rounded)
-        # exact even-odd test, everything times Wt
-        p = proj(Q, self.axis)
-        inside = False
-        a = self.uv[-1]
-        for b in self.uv:
-            av, bv = a[1] * Wt, b[1] * Wt
-            if (av > p[1]) != (bv > p[1]):
-                au, bu = a[0] * Wt, b[0] * Wt
-                c = (au - p[0]) * (bv - av) + (p[1] - av) * (bu - au)
-                if (c > 0) == (bv > av):
-                    inside = not inside
-            a = b
+        # exact even-odd test seen along the ray: every point (vertices times w, the ray's
+        # origin O) moved along D onto the plane where D's largest coordinate k is 0
+        # (times D_k, to stay in integers), then that coordinate dropped
+        k = max(range(3), key=lambda i: abs(ray.D[i]))
+        Dk = ray.D[k]
+
+        def seen(P, P_k):
+            q = tuple(P[i] * Dk - P_k * ray.D[i] for i in range(3))
+            return tuple(q[i] for i in range(3) if i != k)
+        loop = [seen(tuple(c * ray.w for c in V), V[k] * ray.w) for V in self.Vi]
+        inside = even_odd(loop, seen(ray.O, ray.O[k]))
         return self._finish(ray, tau, Q, Wt, X, inside, cosf)
 
     def _finish(self, ray, tau, Q, Wt, X, inside, cosf):
@@ -641,12 +655,8 @@ class Polygon:
             # a segment leaving (a point within EPS of) the plane crosses it nowhere else
             return Result(False)
         inside_t, amb_t = _tau_ok_exact(tau, ray, S)
-        p = proj(Xs, self.axis)
-        mind = float('inf')
-        a = self.uvf[-1]
-        for b in self.uvf:
-            mind = min(mind, seg_dist2d(p, a, b))
-            a = b
+        u, v = ray_basis(ray.Df)
+        mind = loop_distance(along_ray(self.Vf, ray.Of, u, v), (0.0, 0.0))
         amb = amb_t or mind < EPS * S or cosf < EPS
         n = self.Nf
         return Result(inside and inside_t, tau, amb, Q, Wt, n, dist, S)
