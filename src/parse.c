@@ -9,6 +9,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "clearance.h"
 #include "diag.h"
 #include "image.h"
 #include "shape.h"
@@ -951,6 +952,30 @@ static int source_pass(scene *s, const char *name, const scene_source *source, i
 	return ok;
 }
 
+/* Each light's clearance, for its shadow segments (trace.c); and the check that the eye
+ * and the lights stand off every surface by more than the type can lose (REAL_CLEARANCE_MIN:
+ * an eye that Q16.16 rounds onto a floor loses the floor). */
+static int place_eye_and_lights(scene *s, const char *name)
+{
+	int i;
+	for (i = -1; i < s->light_count; i++) {
+		int nearest;
+		real clearance = scene_clearance(s, i < 0 ? &s->camera.from : &s->lights[i].position,
+						 &nearest);
+		if (i >= 0)
+			s->lights[i].clearance = clearance;
+		if (clearance < REAL_CLEARANCE_MIN) {
+			diag_error(name, 0,
+				   "cannot be rendered in %s: the %s is within 2^%d units of the surface "
+				   "on line %d",
+				   REAL_NAME, i < 0 ? "eye" : "light",
+				   REAL_CLEARANCE_BITS - 16 - s->length_shift, s->objects[nearest].line);
+			return 0;
+		}
+	}
+	return 1;
+}
+
 /* Loads a scene from a re-readable source: once in floating point; in fixed point first
  * to measure it, then at the scale that fits it, then checks it can be held. */
 int parse_scene_source(scene *s, const char *name, const scene_source *source)
@@ -991,7 +1016,7 @@ int parse_scene_source(scene *s, const char *name, const scene_source *source)
 			   REAL_NAME, e, f, why);
 		return 0;
 	}
-	return 1;
+	return place_eye_and_lights(s, name);
 }
 
 /* A byte buffer read from its start on every pass. */

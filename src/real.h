@@ -170,6 +170,10 @@ typedef int32_t unit;
  * the dark speckles on cones.nff (1,350 -> 4,093 of 65,536 at 256x256). */
 #define real_surface_offset(scale, rough) \
 	((rough) ? (real)16 + ((scale) >> 13) : (real)8 + ((scale) >> 16))
+/* An eye or a light nearer a surface than 2^REAL_CLEARANCE_BITS steps may round onto it or
+ * through it. */
+#define REAL_CLEARANCE_BITS 2
+#define REAL_CLEARANCE_MIN ((real)1 << REAL_CLEARANCE_BITS)
 #define real_from_text(text, shift, out) fixed_from_text((text), (shift), (out))
 #define REAL_RANGE_TEXT "the range of Q16.16 fixed point"
 #define real_format(x, shift, buf, size) fixed_format((x), (shift), (buf), (size))
@@ -188,6 +192,9 @@ typedef real real2; /* floating point needs no wider type for squares */
 #define REAL_FAR REAL_C(1e15) /* a length beyond any scene's coordinates */
 #define real_ldexp(x, e) real_ldexp_((x), (e))
 #define real_surface_offset(scale, rough) ((void)(rough), real_mul(REAL_OFFSET, (scale)))
+/* Floating point places any point off a surface. */
+#define REAL_CLEARANCE_BITS 0
+#define REAL_CLEARANCE_MIN REAL_C(0.0)
 /* Reading numbers: real_from_text converts a whole token, times 2^shift (the scene's
  * length scale, always 0 in floating point), and returns a REAL_TEXT_ status. */
 static inline int real_from_text(const char *text, int shift, real *out)

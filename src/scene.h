@@ -21,6 +21,7 @@ typedef struct {
 typedef struct {
 	vec3 position;
 	vec3 color;
+	real clearance; /* no surface is nearer (clearance.c) */
 } light;
 
 enum shape_kind {

@@ -61,20 +61,27 @@ void tracer_init(tracer *t, const scene *s, int depth, real cutoff)
 	}
 }
 
-vec3 trace_offset(const hit *h, dir3 side)
+/* How far rays leave a hit point. */
+static real offset_size(const hit *h)
 {
 #if RT_OFFSET_FIXED
 	/* The classic fixed epsilon, for comparison only: too small far from the origin,
 	 * too large for small objects (numerics.md section 2). */
-	return dir_madd(h->point, REAL_C(1e-4), side);
+	(void)h;
+	return REAL_C(1e-4);
 #else
 	/* The hit point's rounding error scales with its own size and the ray's length, not
 	 * with the unit of length: a scene modelled in metres with 50 um parts needs offsets
 	 * far below 1e-4. The small floor keeps a point at the origin off its surface. */
 	real scale = real_max(REAL_C(0.0009765625),
 			      real_max(vec_max_abs(h->point), real_fabs(h->t)));
-	return dir_madd(h->point, real_surface_offset(scale, h->rough), side);
+	return real_surface_offset(scale, h->rough);
 #endif
+}
+
+vec3 trace_offset(const hit *h, dir3 side)
+{
+	return dir_madd(h->point, offset_size(h), side);
 }
 
 /* Index of refraction of the medium on top of the stack (1 for the outside). */
@@ -113,6 +120,7 @@ static vec3 trace_ray(tracer *t, const ray *r, int skip, int level, real weight,
 typedef struct {
 	const hit *h;
 	vec3 point;
+	real offset; /* how far point is from the hit's */
 	int made;
 	int skip;
 } departure;
@@ -120,7 +128,8 @@ typedef struct {
 static vec3 departure_point(departure *d)
 {
 	if (!d->made) {
-		d->point = trace_offset(d->h, d->h->normal);
+		d->offset = offset_size(d->h);
+		d->point = dir_madd(d->h->point, d->offset, d->h->normal);
 		d->made = 1;
 	}
 	return d->point;
@@ -139,6 +148,19 @@ REAL_APART static vec3 horizon_to_light(const light *l, const ray *r, unit per_t
 		       dir_to_vec(r->dir));
 }
 
+/* The distance along `to` and its direction, from one reciprocal square root (fixed point:
+ * no root and no division); 0 when `to` has no length. */
+static real toward(vec3 to, dir3 *dir)
+{
+	real2 distance2 = vec_dot2(to, to);
+	real_reciprocal per_distance;
+	if (!(distance2 > 0))
+		return REAL_C(0.0);
+	per_distance = real2_reciprocal_sqrt(distance2);
+	*dir = dir_times_reciprocal(to, per_distance);
+	return real2_sqrt_by(distance2, per_distance);
+}
+
 /* Diffuse and highlight from every light the surface faces, through shadow rays. */
 static vec3 shade_lights(tracer *t, const ray *r, departure *from, const material *mat,
 			 dir3 mirror_dir, int level)
@@ -151,20 +173,14 @@ static vec3 shade_lights(tracer *t, const ray *r, departure *from, const materia
 		const light *l = &s->lights[i];
 		vec3 to_light = h->t < HORIZON_T ? vec_sub(l->position, h->point)
 						 : horizon_to_light(l, r, h->per_t);
-		real2 distance2 = vec_dot2(to_light, to_light);
 		real distance, diffuse, highlight, pass;
 		unit cosine;
-		real_reciprocal per_distance;
 		dir3 dir;
 		vec3 lit;
 		ray shadow;
-		if (!(distance2 > 0))
+		distance = toward(to_light, &dir);
+		if (!(distance > REAL_C(0.0)))
 			continue;
-		/* The distance and the direction from one reciprocal square root (fixed point:
-		 * no root and no division). */
-		per_distance = real2_reciprocal_sqrt(distance2);
-		distance = real2_sqrt_by(distance2, per_distance);
-		dir = dir_times_reciprocal(to_light, per_distance);
 		/* A light behind the surface sends no shadow ray (SPD rule). */
 		cosine = dir_dot(h->normal, dir);
 		if (cosine <= UNIT_C(0.0))
@@ -192,8 +208,21 @@ static vec3 shade_lights(tracer *t, const ray *r, departure *from, const materia
 			sum = vec_add(sum, lit);
 			continue;
 		}
+		/* The shadow ray leaves from the offset point along the direction from the hit
+		 * point: its segment ends at the light plus the offset. Where no surface is
+		 * that near the light (its clearance, parse.c), nothing between the two ends
+		 * can tell them apart, and that costs nothing. Nearer, it could end behind the
+		 * surface and be falsely shadowed by it: the segment then runs from the offset
+		 * point towards the light itself, and stops the offset short of it, as it
+		 * starts the offset off the surface: a surface that near the light (1e-9 from
+		 * it, in float at 5 units) is within the blocker test's rounding of it. */
 		shadow.origin = departure_point(from);
 		shadow.dir = dir;
+		if (l->clearance <= from->offset + from->offset) {
+			distance = toward(vec_sub(l->position, shadow.origin), &shadow.dir) - from->offset;
+			if (!(distance > REAL_C(0.0)))
+				continue;
+		}
 		t->stats.shadow_rays++;
 		{
 			int *cached = &t->last_blocker[level - 1][i];

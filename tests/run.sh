@@ -1,8 +1,10 @@
 #!/bin/sh
 # run.sh - runs every test of rt and ends with one line `N passed, N failed`.
 # Called by `make test` after the binaries are built:
-#   unit tests (normal and ASan+UBSan builds), command-line tests, golden renders, and
-#   the malformed and unusual scenes of tests/bad and tests/good (bad.sh).
+#   unit tests (normal and ASan+UBSan builds), command-line tests, golden renders, the
+#   malformed and unusual scenes of tests/bad and tests/good (bad.sh), fixed point against
+#   the reference (fixed.sh) and the hard scenes against the visibility oracle in every
+#   number type (watertight.sh).
 cd "$(dirname "$0")/.." || exit 1
 passed=0
 failed=0
@@ -46,6 +48,7 @@ for script in tests/cli.sh tests/golden.sh tests/bad.sh; do
 	tally "$name-sanitized" "$(RT=./build/san/rt sh "$script" 2>&1)"
 done
 tally fixed "$(sh tests/fixed.sh 2>&1)"
+tally watertight "$(sh tests/watertight.sh 2>&1)"
 if command -v arm-none-eabi-gcc >/dev/null 2>&1; then
 	tally mcu "$(sh tests/mcu.sh 2>&1)"
 else

@@ -131,6 +131,7 @@ void suite_image(void);
 void suite_output(void);
 void suite_camera(void);
 void suite_bvh(void);
+void suite_clearance(void);
 void suite_fixed(void);
 void suite_fixed_kernels(void); /* its integer kernels: also run on the MCU */
 
