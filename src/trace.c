@@ -322,6 +322,7 @@ static vec3 trace_ray(tracer *t, const ray *r, int skip, int level, real weight,
 
 	from.h = &h;
 	from.point = h.point; /* until made */
+	from.offset = REAL_C(0.0);
 	from.made = 0;
 	from.skip = object_can_rehit(s, h.object, h.front) ? -1 : h.object;
 	color = shade_lights(t, r, &from, mat, mirror_dir, level);
