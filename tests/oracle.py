@@ -2,6 +2,7 @@
 # oracle.py - an independent visibility (and shadow) oracle for rt's --ids images.
 #
 # Usage: python3 tests/oracle.py SCENE.nff --ids RT_IDS.pgm [--image RT.ppm] [-s WxH] [-v]
+#            [--more-ids OTHER.pgm ...] [--write-wrong]
 #
 # For every pixel it works out, from the scene's decimal numbers taken exactly, the SET of
 # object ids the eye ray through the pixel centre may legitimately hit first, and counts
@@ -23,6 +24,9 @@
 # object, on a material without mirror or transmission, that rt shows brighter than that.
 # A light through a transmitting object, or grazing the surface (|cosine| <= 1e-3), gets
 # no verdict; a pixel is judged only when its first hit is certain and rt agrees with it.
+# --more-ids judges further --ids images of the same scene and size in the same pass (a
+# `wrong N of M pixels (P%) FILE` line each); --write-wrong writes each image's wrong
+# pixels to IDS.wrong, one index y * width + x per line (tools/speed-vs-error uses both).
 # -v lists the first wrong pixels (with every object tested and its status) and the first
 # false shadows and lights, and prints the running time on standard error.
 # Exit status 0, or 2 when an input cannot be read, does not match the scene's size, or
@@ -1134,6 +1138,12 @@ def main(argv):
     ap = argparse.ArgumentParser(description='Independent visibility oracle for rt --ids images.')
     ap.add_argument('scene')
     ap.add_argument('--ids', required=True)
+    ap.add_argument('--more-ids', action='append', default=[],
+                    help='another --ids image of the same scene and size, judged in the '
+                         'same pass (repeatable); a line each, ending with its name')
+    ap.add_argument('--write-wrong', action='store_true',
+                    help='write the wrong pixels of each ids image to IDS.wrong, one '
+                         'index (y * width + x) per line')
     ap.add_argument('--image')
     ap.add_argument('-s', dest='size')
     ap.add_argument('-v', action='store_true')
@@ -1149,6 +1159,12 @@ def main(argv):
         iw, ih, isamples = read_ids(args.ids)
         if (iw, ih) != (W, H):
             raise OracleError('%s is %dx%d, the scene asks for %dx%d' % (args.ids, iw, ih, W, H))
+        more = []
+        for path in args.more_ids:
+            mw, mh, msamples = read_ids(path)
+            if (mw, mh) != (W, H):
+                raise OracleError('%s is %dx%d, expected %dx%d' % (path, mw, mh, W, H))
+            more.append((path, msamples, []))
         img = None
         if args.image:
             pw, ph, img = read_ppm(args.image)
@@ -1183,6 +1199,9 @@ def main(argv):
                 rt_id = (isamples[2 * px] << 8) | isamples[2 * px + 1]
                 ray = world.eye_ray(i, j)
                 ids, certain, entries = classify_pixel(world, ray, cand[px])
+                for (_, msamples, mwrong) in more:
+                    if (msamples[2 * px] << 8) | msamples[2 * px + 1] not in ids:
+                        mwrong.append(px)
                 if rt_id not in ids:
                     wrong.append((i, j, rt_id, ids, entries))
                     continue
@@ -1208,6 +1227,15 @@ def main(argv):
         return 2
     n = W * H
     print('wrong %d of %d pixels (%.4f%%)' % (len(wrong), n, 100.0 * len(wrong) / n))
+    for (path, _, mwrong) in more:
+        print('wrong %d of %d pixels (%.4f%%) %s' % (len(mwrong), n, 100.0 * len(mwrong) / n,
+                                                     path))
+    if args.write_wrong:
+        lists = [(args.ids, [j * W + i for (i, j, _, _, _) in wrong])]
+        lists += [(path, mwrong) for (path, _, mwrong) in more]
+        for (path, pixels) in lists:
+            with open(path + '.wrong', 'w') as f:
+                f.write(''.join('%d\n' % px for px in pixels))
     if img is not None:
         print('false shadows %d of %d clearly lit pixels' % (false_shadow, lit_n))
         print('false lights %d of %d clearly dark pixels' % (false_light, dark_n))
