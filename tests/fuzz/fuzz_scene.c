@@ -1,6 +1,7 @@
 /* fuzz_scene.c - the fuzzing entry point: parse any bytes as a scene and, if they parse,
  * render a tiny image of it. Built with libFuzzer by `make fuzz`; replayed over the
- * corpus by `make test` (replay.c). See LICENSE for copyright and licence. */
+ * corpus by `make test` (replay.c), which checks through fuzz_rendered and fuzz_eye_rays
+ * that the inputs reach the renderer. See LICENSE for copyright and licence. */
 #include <stddef.h>
 #include <stdint.h>
 
@@ -14,6 +15,9 @@
 #include "trace.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+
+/* Inputs rendered and the eye rays they traced, since the process started. */
+unsigned long fuzz_rendered, fuzz_eye_rays;
 
 static void quiet(void *ctx, const char *message)
 {
@@ -42,7 +46,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 #endif
 		/* A tiny image: every code path of the tracer, a few dozen eye rays; then the
 		 * same through the ANSI preview. */
-		if (camera_init(&cam, &fuzz_scene.camera, 6, 4)) {
+		if (!camera_init(&cam, &fuzz_scene.camera, 6, 4)) {
 			ppm_sink ppm;
 			preview_sink ansi;
 			tracer_init(&fuzz_tracer, &fuzz_scene, fuzz_scene.depth, fuzz_scene.cutoff);
@@ -52,6 +56,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 			preview_sink_init(&ansi, PREVIEW_ANSI_256, discard, NULL);
 			render_image(&fuzz_tracer, &cam, SAMPLE_CENTRE, 0, cam.height, &ansi.base,
 				     NULL, NULL);
+			fuzz_rendered++;
+			fuzz_eye_rays += fuzz_tracer.stats.eye_rays;
 		}
 	}
 	diag_set_sink(NULL, NULL);
