@@ -522,13 +522,14 @@ static dir3 newell_normal(const vec3 *v, int count)
 	real part[3];
 	int i, k;
 	for (i = 0; i < count; i++) {
-		vec3 a = v[i], b = v[i + 1 == count ? 0 : i + 1];
+		/* The vertices by pointer: copies of them cost 20 bytes of M0 flash. */
+		const vec3 *a = &v[i], *b = &v[i + 1 == count ? 0 : i + 1];
 		for (k = 0; k < 3; k++) {
 			int j = k == 2 ? 0 : k + 1, m = k == 0 ? 2 : k - 1;
 			/* Saturating: the measuring pass reads coordinates up to fixed point's
 			 * limit. */
-			n[k] += real_mul2(real_add(vec_get(a, j), -vec_get(b, j)),
-					  real_add(vec_get(a, m), vec_get(b, m)));
+			n[k] += real_mul2(real_add(vec_get(*a, j), -vec_get(*b, j)),
+					  real_add(vec_get(*a, m), vec_get(*b, m)));
 		}
 	}
 	for (k = 0; k < 3; k++)
@@ -541,17 +542,18 @@ static dir3 newell_normal(const vec3 *v, int count)
 }
 
 /* The mean of vertices[0..count), summed as real2 so that many large coordinates cannot
- * overflow fixed point. */
+ * overflow fixed point. Axis by axis, one sum at a time (each still in vertex order, so
+ * the same sums in every type): 32 bytes less M0 flash than three sums side by side. */
 static vec3 centroid_of(const vec3 *v, int count)
 {
-	real2 sum[3] = {0, 0, 0};
 	real n = real_from_int(count), mean[3];
 	int i, k;
-	for (i = 0; i < count; i++)
-		for (k = 0; k < 3; k++)
-			sum[k] += real2_from(vec_get(v[i], k));
-	for (k = 0; k < 3; k++)
-		mean[k] = real2_div(sum[k], n);
+	for (k = 0; k < 3; k++) {
+		real2 sum = 0;
+		for (i = 0; i < count; i++)
+			sum += real2_from(vec_get(v[i], k));
+		mean[k] = real2_div(sum, n);
+	}
 	return vec_make(mean[0], mean[1], mean[2]);
 }
 
