@@ -472,6 +472,14 @@ static inline fixed_reciprocal fixed_unit_reciprocal(fixed_reciprocal r)
 	return r;
 }
 
+/* FIXED_APART: one of fixed.c's functions below kept out of line on the M0, where
+ * link-time optimisation would inline it into its caller; each use says what it saves. */
+#if FIXED_NARROW && defined(__GNUC__)
+#define FIXED_APART __attribute__((noinline))
+#else
+#define FIXED_APART
+#endif
+
 #if !FIXED_NARROW || defined(FIXED_KERNEL_BODIES)
 FIXED_KERNEL int64_t fixed_wide_mul(int32_t a, int32_t b)
 {
