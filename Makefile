@@ -57,6 +57,27 @@ build/san/unit-tests-fixed: $(SRC) $(TEST_SRC) $(wildcard src/*.h tests/*.h)
 	@mkdir -p $(@D)
 	$(CC) $(RT_CFLAGS) $(SAN_FLAGS) -DRT_REAL_FIXED -Isrc $(CPPFLAGS) -O1 -o $@ $(LIB_SRC) $(TEST_SRC) $(LDLIBS) $(RT_LDLIBS)
 
+# MemorySanitizer (reads of uninitialised memory, which ASan cannot see) where clang is
+# present: unit tests, the corpus replay and the fixed-point program, in double and Q16.16.
+MSAN_CC ?= clang
+MSAN_FLAGS = -fsanitize=memory -fsanitize-memory-track-origins -fno-omit-frame-pointer -g -O1
+MSAN_BUILDS = build/msan/unit-tests build/msan/unit-tests-fixed build/msan/replay \
+	build/msan/replay-fixed build/msan/rt-fixed
+MSAN_TEST = $(if $(shell command -v $(MSAN_CC)),$(MSAN_BUILDS))
+build/msan/unit-tests build/msan/unit-tests-fixed: build/msan/unit-tests%: $(SRC) $(TEST_SRC) \
+		$(wildcard src/*.h tests/*.h)
+	@mkdir -p $(@D)
+	$(MSAN_CC) $(WARN) -ffp-contract=off $(MSAN_FLAGS) $(if $*,-DRT_REAL_FIXED) -Isrc -o $@ \
+		$(LIB_SRC) $(TEST_SRC) -lm
+build/msan/replay build/msan/replay-fixed: build/msan/replay%: $(LIB_SRC) tests/fuzz/fuzz_scene.c \
+		tests/fuzz/replay.c $(wildcard src/*.h)
+	@mkdir -p $(@D)
+	$(MSAN_CC) $(WARN) -ffp-contract=off $(MSAN_FLAGS) $(if $*,-DRT_REAL_FIXED) -Isrc -o $@ \
+		$(LIB_SRC) tests/fuzz/fuzz_scene.c tests/fuzz/replay.c -lm
+build/msan/rt-fixed: $(SRC) $(wildcard src/*.h)
+	@mkdir -p $(@D)
+	$(MSAN_CC) $(WARN) -ffp-contract=off $(MSAN_FLAGS) -DRT_REAL_FIXED -o $@ $(SRC) -lm
+
 build/san/replay: $(LIB_SRC) tests/fuzz/fuzz_scene.c tests/fuzz/replay.c $(wildcard src/*.h)
 	@mkdir -p $(@D)
 	$(CC) $(RT_CFLAGS) $(SAN_FLAGS) -Isrc $(CPPFLAGS) -O1 -o $@ $(LIB_SRC) tests/fuzz/fuzz_scene.c tests/fuzz/replay.c $(LDLIBS) $(RT_LDLIBS)
@@ -118,7 +139,7 @@ build/rt-%: $(SRC) $(wildcard src/*.h)
 
 test: rt build/unit-tests build/san/rt build/san/unit-tests build/san/replay build/san/replay-fixed \
       build/unit-tests-float build/unit-tests-ref build/unit-tests-fixed build/san/unit-tests-fixed build/rt-fixed build/rt-ref \
-      build/rt-float $(MCU_TEST)
+      build/rt-float $(MSAN_TEST) $(MCU_TEST)
 	@sh tests/run.sh
 
 # Fuzzing with libFuzzer (clang): `make fuzz FUZZ_SECONDS=600` (FUZZ_TYPE=fixed fuzzes

@@ -37,6 +37,8 @@ int hedron_intersect(const scene *s, const object *o, const ray *r, real tmin, r
 		return 0;
 	if (h) {
 		h->t = best;
+		if (!(best < HORIZON_T))
+			h->per_t = unit_over_real(UNIT_C(1.0), best);
 		h->point = dir_madd(r->origin, best, r->dir);
 		h->normal = planes[face].normal;
 		h->shading = h->normal;
@@ -63,6 +65,10 @@ int hedron_intersect(const scene *s, const object *o, const ray *r, real tmin, r
 			continue;
 		}
 		t = real_div_unit(-vn, vd);
+		/* A face met beyond the horizon is met there, as a plane is (plane.c): an open
+		 * polyhedron (a half-space) reaches the horizon too. */
+		if (t > HORIZON_T)
+			t = HORIZON_T;
 		if (vd < UNIT_C(0.0)) {
 			/* Front face: the ray enters the half-space here. */
 			if (t > tfar)
@@ -94,6 +100,12 @@ int hedron_intersect(const scene *s, const object *o, const ray *r, real tmin, r
 	}
 	if (h) {
 		h->t = t;
+		/* At the horizon the tracer lights the face's true far point from the
+		 * reciprocal of its true t, as a plane's (plane.c). */
+		if (!(t < HORIZON_T))
+			h->per_t = unit_over_real(dir_dot(planes[face].normal, r->dir),
+						  planes[face].offset -
+							  dir_dot_vec(planes[face].normal, r->origin));
 		h->point = dir_madd(r->origin, t, r->dir);
 		h->normal = planes[face].normal;
 		h->shading = h->normal;

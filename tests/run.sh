@@ -48,6 +48,16 @@ for script in tests/cli.sh tests/golden.sh tests/bad.sh; do
 	tally "$name-sanitized" "$(RT=./build/san/rt sh "$script" 2>&1)"
 done
 tally fixed "$(sh tests/fixed.sh 2>&1)"
+# MemorySanitizer (uninitialised reads) where clang is present: `make test` built these.
+if command -v clang >/dev/null 2>&1; then
+	tally unit-msan "$(./build/msan/unit-tests 2>&1)"
+	tally unit-fixed-msan "$(./build/msan/unit-tests-fixed 2>&1)"
+	tally fuzz-replay-msan "$(./build/msan/replay "$@" 2>&1)"
+	tally fuzz-replay-fixed-msan "$(./build/msan/replay-fixed "$@" 2>&1)"
+	tally fixed-msan "$(FIXED=build/msan/rt-fixed FP_CHECK=0 sh tests/fixed.sh 2>&1)"
+else
+	echo "msan: skipped (no clang; MemorySanitizer needs it)"
+fi
 tally watertight "$(sh tests/watertight.sh 2>&1)"
 if command -v arm-none-eabi-gcc >/dev/null 2>&1; then
 	tally mcu "$(sh tests/mcu.sh 2>&1)"

@@ -32,7 +32,7 @@ static double length_error(dir3 v)
 	long double x = (long double)test_unit_double(v.x), y = (long double)test_unit_double(v.y),
 		    z = (long double)test_unit_double(v.z);
 #else
-	long double x = v.x, y = v.y, z = v.z;
+	long double x = (long double)v.x, y = (long double)v.y, z = (long double)v.z;
 #endif
 	return (double)(sqrtl(x * x + y * y + z * z) - 1.0L);
 }
