@@ -1,11 +1,22 @@
-/* output.c - safe image output: a temporary file beside the target, renamed on success,
- * removed on failure or when a signal stops the run.
+/* output.c - where `-o FILE` writes, as the shell's `>` would, and never half an image:
+ * - a FIFO, a terminal, a device or /dev/stdout is written straight into, as a stream;
+ * - a regular file (new, or replaced) is written whole to a temporary file first, which
+ *   is moved into place only when everything succeeded;
+ * - a symbolic link is followed: its target is replaced, the link stays;
+ * - a file the user may not write is refused before rendering, as `>` refuses it;
+ * - a file a rename would change (more than one hard link, another owner or group, or in a
+ *   folder the user may not create files in) keeps its inode: the image is made in a
+ *   temporary file elsewhere ($TMPDIR, else /tmp) and copied into it at the end.
+ * A signal that ends the process removes the temporary file first, then ends it as that
+ * signal would.
  * See LICENSE for copyright and licence. */
 #define _POSIX_C_SOURCE 200809L
 
 #include "output.h"
 
 #include <errno.h>
+#include <fcntl.h>
+#include <limits.h>
 #include <signal.h>
 #include <stdlib.h>
 #include <string.h>
@@ -14,84 +25,266 @@
 
 #include "diag.h"
 
-/* The temporary file's name, for the signal handler: it may only call unlink and raise. */
-static char temp_path[4096];
+#ifndef PATH_MAX
+#define PATH_MAX 4096
+#endif
+
+/* The temporary file's name, for the signal handler: it may only call async-signal-safe
+ * functions (unlink, sigaction, raise). */
+static char temp_path[PATH_MAX];
 static volatile sig_atomic_t temp_live;
 
-static void remove_temp_and_die(int sig)
+/* Every signal whose default action ends the process, and what was there before rt's
+ * handler: restored for the re-raise (the default, or a sanitizer's own handler). */
+static const int ending_signals[] = {SIGHUP,  SIGINT,  SIGQUIT, SIGILL,    SIGTRAP, SIGABRT,
+				     SIGBUS,  SIGFPE,  SIGUSR1, SIGSEGV,   SIGUSR2, SIGPIPE,
+				     SIGALRM, SIGTERM, SIGXCPU, SIGXFSZ,   SIGVTALRM, SIGPROF,
+				     SIGSYS};
+#define ENDING_SIGNALS (sizeof ending_signals / sizeof ending_signals[0])
+static struct sigaction previous[ENDING_SIGNALS];
+
+static void remove_temp_and_end(int sig)
 {
+	size_t i;
 	if (temp_live)
 		unlink(temp_path);
-	signal(sig, SIG_DFL);
+	temp_live = 0;
+	for (i = 0; i < ENDING_SIGNALS; i++)
+		if (ending_signals[i] == sig)
+			sigaction(sig, &previous[i], NULL);
+	/* Delivered when the handler returns (the signal is blocked inside it): the process
+	 * ends as the signal ends it, with its exit status (a fault repeats its instruction
+	 * and meets the restored handler). */
 	raise(sig);
 }
 
-/* mkstemp creates the file private (0600); the image should get the mode a plain fopen
- * gives: the replaced file's own, or 0666 less the umask for a new one. */
-static mode_t output_mode(const char *path)
+static void catch_ending_signals(void)
 {
-	struct stat st;
-	mode_t mask;
-	if (stat(path, &st) == 0 && S_ISREG(st.st_mode))
-		return st.st_mode & 07777;
-	mask = umask(0);
-	umask(mask);
-	return 0666 & ~mask;
+	static int caught;
+	size_t i;
+	if (caught)
+		return;
+	caught = 1;
+	for (i = 0; i < ENDING_SIGNALS; i++) {
+		struct sigaction action;
+		if (sigaction(ending_signals[i], NULL, &previous[i]) != 0)
+			continue;
+		/* A signal the caller ignores (nohup's SIGHUP, SIGINT for a background job)
+		 * stays ignored: it would otherwise end a run that was meant to survive it. */
+		if (previous[i].sa_handler == SIG_IGN)
+			continue;
+		memset(&action, 0, sizeof action);
+		action.sa_handler = remove_temp_and_end;
+		sigemptyset(&action.sa_mask);
+		sigaction(ending_signals[i], &action, NULL);
+	}
+}
+
+/* The file a path names after its symbolic links, into `out` (the path itself when it
+ * is none; a dangling link gives the file it would create). 0 with errno on failure. */
+static int follow_links(const char *path, char *out, size_t size)
+{
+	char link[PATH_MAX];
+	int hops;
+	if (strlen(path) >= size) {
+		errno = ENAMETOOLONG;
+		return 0;
+	}
+	strcpy(out, path);
+	for (hops = 0; hops < 40; hops++) {
+		struct stat st;
+		ssize_t n;
+		const char *slash;
+		size_t dir_len;
+		if (lstat(out, &st) != 0 || !S_ISLNK(st.st_mode))
+			return 1;
+		n = readlink(out, link, sizeof link - 1);
+		if (n < 0)
+			return 0;
+		link[n] = '\0';
+		/* A relative target is relative to the link's folder. */
+		slash = strrchr(out, '/');
+		dir_len = link[0] == '/' || !slash ? 0 : (size_t)(slash - out) + 1;
+		if (dir_len + (size_t)n >= size) {
+			errno = ENAMETOOLONG;
+			return 0;
+		}
+		memmove(out + dir_len, link, (size_t)n + 1);
+	}
+	errno = ELOOP;
+	return 0;
+}
+
+/* Makes the temporary file in `dir` (a folder path with its trailing slash, or "" for the
+ * current one), named after `base` where the name fits the folder's NAME_MAX. */
+static int make_temp(const char *dir, const char *base)
+{
+	static const char suffix[] = ".tmpXXXXXX";
+	long name_max = pathconf(*dir ? dir : ".", _PC_NAME_MAX);
+	size_t keep = strlen(base);
+	if (name_max <= 0)
+		name_max = 255;
+	/* A long name is cut (its temporary file only), keeping the suffix mkstemp needs. */
+	if (keep + sizeof suffix - 1 > (size_t)name_max)
+		keep = (size_t)name_max > sizeof suffix - 1 ? (size_t)name_max - (sizeof suffix - 1) : 0;
+	if (snprintf(temp_path, sizeof temp_path, "%s%.*s%s", dir, (int)keep, base, suffix) >=
+	    (int)sizeof temp_path) {
+		errno = ENAMETOOLONG;
+		return -1;
+	}
+	return mkstemp(temp_path);
+}
+
+/* Could the image replace `st` by a rename without changing what a user sees of the file
+ * (its links, its owner and group)? The mode is copied either way. */
+static int rename_keeps_file(const struct stat *st)
+{
+	return st->st_nlink == 1 && st->st_uid == geteuid() && st->st_gid == getegid();
 }
 
 int output_open(output *out, const char *path)
 {
-	static const int signals[] = {SIGINT, SIGTERM, SIGHUP, SIGPIPE};
-	size_t i;
-	int fd;
+	struct stat st;
+	const char *slash, *base;
+	int exists, fd = -1;
+	mode_t mode;
 	out->path = path;
-	out->is_temp = 0;
-	if (!path) {
-		out->file = stdout;
+	out->mode = OUTPUT_STREAM;
+	out->file = stdout;
+	if (!path)
+		return 1;
+	exists = stat(path, &st) == 0;
+	if (exists && S_ISDIR(st.st_mode)) {
+		diag_error(path, 0, "cannot write: %s", strerror(EISDIR));
+		return 0;
+	}
+	/* Not a regular file: a stream (a FIFO and its reader, a terminal, /dev/stdout, a
+	 * device), opened as the shell opens it. */
+	if (exists && !S_ISREG(st.st_mode)) {
+		fd = open(path, O_WRONLY);
+		if (fd < 0 || !(out->file = fdopen(fd, "wb"))) {
+			diag_error(path, 0, "cannot write: %s", strerror(errno));
+			if (fd >= 0)
+				close(fd);
+			return 0;
+		}
 		return 1;
 	}
-	if (snprintf(temp_path, sizeof temp_path, "%s.tmpXXXXXX", path) >= (int)sizeof temp_path) {
-		diag_error(path, 0, "output path too long");
+	if (!follow_links(path, out->target, sizeof out->target)) {
+		diag_error(path, 0, "cannot write: %s", strerror(errno));
 		return 0;
 	}
-	/* A signal the caller ignores (nohup's SIGHUP, SIGINT for a background job) must
-	 * stay ignored: it would otherwise kill a run that was meant to survive it. */
-	for (i = 0; i < sizeof signals / sizeof signals[0]; i++)
-		if (signal(signals[i], remove_temp_and_die) == SIG_IGN)
-			signal(signals[i], SIG_IGN);
-	fd = mkstemp(temp_path);
-	if (fd >= 0)
-		(void)fchmod(fd, output_mode(path));
-	if (fd < 0 || !(out->file = fdopen(fd, "wb"))) {
-		diag_error(path, 0, "cannot create a temporary file beside it: %s", strerror(errno));
-		if (fd >= 0) {
-			close(fd);
-			unlink(temp_path);
-		}
+	if (exists && access(out->target, W_OK) != 0) {
+		diag_error(path, 0, "cannot write: %s", strerror(errno));
 		return 0;
+	}
+	slash = strrchr(out->target, '/');
+	base = slash ? slash + 1 : out->target;
+	catch_ending_signals();
+	if (!exists || rename_keeps_file(&st)) {
+		/* Beside the target, so that the rename stays within one file system. */
+		char dir[PATH_MAX];
+		size_t dir_len = slash ? (size_t)(slash - out->target) + 1 : 0;
+		memcpy(dir, out->target, dir_len);
+		dir[dir_len] = '\0';
+		fd = make_temp(dir, base);
+		if (fd < 0 && !exists) {
+			diag_error(path, 0, "cannot create: %s", strerror(errno));
+			return 0;
+		}
+		out->mode = OUTPUT_RENAME;
+	}
+	if (fd < 0) {
+		/* Copied in at the end: the file keeps its inode, links, owner and group. */
+		const char *tmpdir = getenv("TMPDIR");
+		char dir[PATH_MAX];
+		if (!tmpdir || !*tmpdir)
+			tmpdir = "/tmp";
+		if (snprintf(dir, sizeof dir, "%s/", tmpdir) >= (int)sizeof dir)
+			errno = ENAMETOOLONG;
+		else
+			fd = make_temp(dir, "rt");
+		if (fd < 0) {
+			diag_error(path, 0, "cannot create a temporary file in %s: %s", tmpdir,
+				   strerror(errno));
+			return 0;
+		}
+		out->mode = OUTPUT_COPY;
 	}
 	temp_live = 1;
-	out->is_temp = 1;
+	/* mkstemp makes the file private (0600): the image gets the replaced file's mode, or
+	 * for a new one what the shell's `>` would give it, 0666 less the umask. */
+	if (exists) {
+		mode = st.st_mode & 07777;
+	} else {
+		mode = umask(0);
+		umask(mode);
+		mode = 0666 & ~mode;
+	}
+	if (out->mode == OUTPUT_RENAME)
+		(void)fchmod(fd, mode);
+	if (!(out->file = fdopen(fd, "wb"))) {
+		diag_error(path, 0, "cannot write: %s", strerror(errno));
+		close(fd);
+		unlink(temp_path);
+		temp_live = 0;
+		return 0;
+	}
 	return 1;
+}
+
+/* Copies the finished temporary file into the target, which keeps its inode. */
+static int copy_into_target(output *out)
+{
+	char buffer[65536];
+	int from = open(temp_path, O_RDONLY), to = -1, ok = from >= 0;
+	if (ok)
+		ok = (to = open(out->target, O_WRONLY | O_TRUNC)) >= 0;
+	while (ok) {
+		ssize_t n = read(from, buffer, sizeof buffer), done = 0;
+		if (n <= 0) {
+			ok = n == 0;
+			break;
+		}
+		while (ok && done < n) {
+			ssize_t w = write(to, buffer + done, (size_t)(n - done));
+			ok = w > 0;
+			done += w > 0 ? w : 0;
+		}
+	}
+	if (to >= 0 && close(to) != 0)
+		ok = 0;
+	if (!ok)
+		diag_error(out->path, 0, "cannot write: %s", strerror(errno));
+	if (from >= 0)
+		close(from);
+	return ok;
 }
 
 int output_close(output *out, int ok)
 {
 	int flushed = fflush(out->file) == 0 && !ferror(out->file);
 	if (ok && !flushed)
-		diag_error(NULL, 0, "write error: %s", strerror(errno));
+		diag_error(out->path, 0, "write error: %s", strerror(errno));
 	ok = ok && flushed;
-	if (!out->is_temp)
+	if (out->mode == OUTPUT_STREAM) {
+		if (out->path && fclose(out->file) != 0 && ok) {
+			diag_error(out->path, 0, "write error: %s", strerror(errno));
+			ok = 0;
+		}
 		return ok;
+	}
 	if (fclose(out->file) != 0 && ok) {
 		diag_error(out->path, 0, "write error: %s", strerror(errno));
 		ok = 0;
 	}
-	if (ok && rename(temp_path, out->path) != 0) {
+	if (ok && out->mode == OUTPUT_RENAME && rename(temp_path, out->target) != 0) {
 		diag_error(out->path, 0, "cannot replace: %s", strerror(errno));
 		ok = 0;
 	}
-	if (!ok)
+	if (ok && out->mode == OUTPUT_COPY)
+		ok = copy_into_target(out);
+	if (!ok || out->mode == OUTPUT_COPY)
 		unlink(temp_path);
 	temp_live = 0;
 	return ok;

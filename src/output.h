@@ -1,4 +1,5 @@
-/* output.h - where the image goes: standard output, or a file replaced only on success.
+/* output.h - where the image goes: standard output, a stream, or a file replaced only when
+ * the whole image is written (output.c gives the rules, as README and rt.1 do).
  * See LICENSE for copyright and licence. */
 #ifndef RT_OUTPUT_H
 #define RT_OUTPUT_H
@@ -6,20 +7,24 @@
 #include <stddef.h>
 #include <stdio.h>
 
-/* With a path, the image is written to a temporary file beside it and renamed over it
- * only when everything succeeded, so a failed run (or one stopped by a signal) never
- * leaves a half-written image or touches an existing file. */
+enum output_mode {
+	OUTPUT_STREAM, /* standard output, a FIFO, a terminal, a device: written straight */
+	OUTPUT_RENAME, /* a temporary file beside the target, renamed over it at the end */
+	OUTPUT_COPY    /* a temporary file elsewhere, copied into the target at the end */
+};
+
 typedef struct {
 	FILE *file;
-	const char *path; /* NULL for standard output */
-	int is_temp;
+	const char *path;  /* as given; NULL for standard output */
+	char target[4096]; /* the file replaced: path after its symbolic links */
+	enum output_mode mode;
 } output;
 
-/* Opens the output; reports and returns 0 on failure. */
+/* Opens the output; reports and returns 0 on failure (nothing is touched then). */
 int output_open(output *out, const char *path);
 
-/* Finishes it: flushes and, when ok, renames the temporary file into place; otherwise
- * removes it. Reports a failure and returns 0. */
+/* Finishes it: flushes and, when ok, puts the image in place; otherwise removes the
+ * temporary file and leaves the target as it was. Reports a failure and returns 0. */
 int output_close(output *out, int ok);
 
 /* A write callback for the sinks: ctx is the output. */

@@ -295,6 +295,101 @@ expect_no_stdout "-o into a missing directory"
 expect_err "-o into a missing directory" "rt: $tmp/no/such/dir/image.ppm: "
 if [ ! -e "$tmp/no" ]; then ok; else bad "-o into a missing directory: it was created"; fi
 
+# ---- -o behaves as the shell's > where a user expects it to -----------------------------
+mkdir "$tmp/rules"
+cd "$tmp/rules" || exit 1
+# A symbolic link: its target is replaced, the link stays a link.
+printf 'old\n' >target.ppm
+ln -s target.ppm link.ppm
+run "$tmp/ok.nff" -o link.ppm
+expect_status "-o through a symlink" 0
+if [ -L link.ppm ]; then ok; else bad "-o through a symlink: the link was replaced"; fi
+expect_same "-o through a symlink" "$tmp/ok.ppm" target.ppm
+# A dangling link: the file it names is created.
+ln -s made.ppm dangling.ppm
+run "$tmp/ok.nff" -o dangling.ppm
+expect_status "-o through a dangling symlink" 0
+if [ -L dangling.ppm ]; then ok; else bad "-o through a dangling symlink: the link was replaced"; fi
+expect_same "-o through a dangling symlink" "$tmp/ok.ppm" made.ppm
+# Hard links stay one file: both names see the new image.
+printf 'old\n' >first.ppm
+ln first.ppm second.ppm
+run "$tmp/ok.nff" -o first.ppm
+expect_status "-o onto a hard link" 0
+expect_same "-o onto a hard link" "$tmp/ok.ppm" second.ppm
+if [ "$(ls -i first.ppm | cut -d' ' -f1)" = "$(ls -i second.ppm | cut -d' ' -f1)" ]; then ok; else
+	bad "-o onto a hard link: the links were split"
+fi
+# A FIFO is written straight into, and its reader gets the image.
+if mkfifo pipe.ppm 2>/dev/null; then
+	cat pipe.ppm >from-pipe.ppm &
+	reader=$!
+	run "$tmp/ok.nff" -o pipe.ppm
+	wait "$reader"
+	expect_status "-o into a FIFO" 0
+	expect_same "-o into a FIFO" "$tmp/ok.ppm" from-pipe.ppm
+	if [ -p pipe.ppm ]; then ok; else bad "-o into a FIFO: it was replaced"; fi
+fi
+# Names of 246 to 255 bytes: the temporary name is cut to fit NAME_MAX, the file is not.
+for n in 246 251 255; do
+	name=$(awk -v n="$n" 'BEGIN { while (length(s) < n - 4) s = s "x"; print s ".ppm" }')
+	run "$tmp/ok.nff" -o "$name"
+	expect_status "-o with a $n-byte name" 0
+	expect_same "-o with a $n-byte name" "$tmp/ok.ppm" "$name"
+	rm -f "$name"
+done
+if [ "$(ls -A | grep -c tmp)" -eq 0 ]; then ok; else bad "-o rules: left behind: $(ls -A | grep tmp)"; fi
+# As a user who owns none of it (root runs these as nobody): a file of mode 0444 is
+# refused as the shell refuses it and kept; a writable file of another owner keeps its
+# owner and inode; a writable file in a folder the user cannot write is written.
+as_user=
+if [ "$(id -u)" -ne 0 ]; then
+	as_user=" "
+elif command -v setpriv >/dev/null 2>&1; then
+	as_user="setpriv --reuid=65534 --regid=65534 --clear-groups"
+fi
+if [ -n "$as_user" ]; then
+	mkdir shared readonly
+	cp "$tmp/ok.nff" shared/scene.nff
+	chmod 777 shared
+	printf 'old\n' >shared/locked.ppm
+	chmod 444 shared/locked.ppm
+	[ "$(id -u)" -eq 0 ] && chown 65534 shared/locked.ppm
+	$as_user "$RT" shared/scene.nff -o shared/locked.ppm >"$tmp/out" 2>"$tmp/err"
+	status=$?
+	expect_status "-o onto a read-only file" 1
+	expect_err "-o onto a read-only file" "rt: shared/locked.ppm: cannot write: Permission denied"
+	if [ "$(cat shared/locked.ppm)" = old ]; then ok; else bad "-o onto a read-only file: it changed"; fi
+	if [ "$(id -u)" -eq 0 ]; then
+		printf 'old\n' >shared/theirs.ppm
+		chmod 666 shared/theirs.ppm
+		inode=$(ls -i shared/theirs.ppm | cut -d' ' -f1)
+		$as_user "$RT" shared/scene.nff -o shared/theirs.ppm >"$tmp/out" 2>"$tmp/err"
+		status=$?
+		expect_status "-o onto another owner's file" 0
+		expect_same "-o onto another owner's file" "$tmp/ok.ppm" shared/theirs.ppm
+		if [ "$(ls -ln shared/theirs.ppm | awk '{ print $3 }')" = 0 ] &&
+			[ "$(ls -i shared/theirs.ppm | cut -d' ' -f1)" = "$inode" ]; then ok; else
+			bad "-o onto another owner's file: owner or inode changed"
+		fi
+	fi
+	printf 'old\n' >readonly/open.ppm
+	chmod 666 readonly/open.ppm
+	chmod 555 readonly
+	$as_user "$RT" shared/scene.nff -o readonly/open.ppm >"$tmp/out" 2>"$tmp/err"
+	status=$?
+	expect_status "-o in a read-only folder" 0
+	expect_same "-o in a read-only folder" "$tmp/ok.ppm" readonly/open.ppm
+	$as_user "$RT" shared/scene.nff -o readonly/new.ppm >"$tmp/out" 2>"$tmp/err"
+	status=$?
+	expect_status "-o, new file in a read-only folder" 1
+	expect_err "-o, new file in a read-only folder" "rt: readonly/new.ppm: cannot create: Permission denied"
+	chmod 755 readonly
+else
+	echo "cli.sh: -o as another user: skipped (running as root without setpriv)"
+fi
+cd - >/dev/null || exit 1
+
 # Standard output that cannot be written.
 if [ -w /dev/full ]; then
 	"$RT" "$tmp/ok.nff" >/dev/full 2>"$tmp/err"
