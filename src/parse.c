@@ -25,6 +25,9 @@ typedef struct {
 	int line;     /* line of the next byte */
 	int last_line; /* line of the last byte read: where the end of the file is reported */
 	int pending;  /* a byte read ahead, or NO_BYTE */
+	int after_cr; /* the last byte read was a CR: an LF now ends no further line */
+	int counted;  /* the last byte read ended a line (give_back takes that back) */
+	int cr_before; /* after_cr before the last byte (give_back restores it) */
 	int at_start; /* nothing read yet: a byte-order mark may follow */
 	char tok[RT_TOKEN_MAX + 1];
 	int tok_line;  /* line of the current token */
@@ -46,10 +49,22 @@ static int next_byte(lexer *lx)
 	}
 	if (c >= 0)
 		lx->last_line = lx->line;
-	/* Saturates: a hostile file of 2^31 newlines must not overflow the counter. */
-	if (c == '\n' && lx->line < INT_MAX)
-		lx->line++;
+	/* A line ends at LF, at CR LF and at a lone CR (old Mac files): a CR counts the line,
+	 * an LF right after it does not. Saturates: a hostile file of 2^31 newlines must not
+	 * overflow the counter. */
+	lx->counted = (c == '\r' || (c == '\n' && !lx->after_cr)) && lx->line < INT_MAX;
+	lx->line += lx->counted;
+	lx->cr_before = lx->after_cr;
+	lx->after_cr = c == '\r';
 	return c;
+}
+
+/* Gives back the byte just read, to be read again: it counts its line again then. */
+static void give_back(lexer *lx, int c)
+{
+	lx->line -= lx->counted;
+	lx->after_cr = lx->cr_before;
+	lx->pending = c;
 }
 
 /* Reports the first error only (later ones would be consequences) and returns 0. */
@@ -92,11 +107,9 @@ static int check_start(lexer *lx)
 			return 1;
 		return fail(lx, 1, "unexpected bytes at the start of the file");
 	}
-	/* Give the byte back; a newline is counted again when reread (as in next_token),
-	 * else a file starting with a blank line reports every line one too far. */
-	if (c == '\n')
-		lx->line--;
-	lx->pending = c;
+	/* Give the byte back (its line end counts again when reread, else a file starting
+	 * with a blank line reports every line one too far). */
+	give_back(lx, c);
 	return 1;
 }
 
@@ -115,7 +128,7 @@ static int next_token(lexer *lx)
 		c = next_byte(lx);
 		if (c == '#') {
 			/* A comment runs to the end of the line, whatever bytes it holds. */
-			while (c != '\n' && c >= 0)
+			while (c != '\n' && c != '\r' && c >= 0)
 				c = next_byte(lx);
 		}
 		if (c < 0) {
@@ -145,12 +158,9 @@ static int next_token(lexer *lx)
 		c = next_byte(lx);
 	}
 	lx->tok[n] = '\0';
-	if (c >= 0) {
-		/* Give the delimiter back; its newline is counted again when reread. */
-		if (c == '\n')
-			lx->line--;
-		lx->pending = c;
-	}
+	/* Give the delimiter back; its line end is counted again when reread. */
+	if (c >= 0)
+		give_back(lx, c);
 	return lx->have_tok = 1;
 }
 
@@ -920,6 +930,7 @@ static int parse_pass(scene *s, const char *file, read_fn read, void *ctx, int l
 	p->lx.line = 1;
 	p->lx.last_line = 1;
 	p->lx.pending = NO_BYTE;
+	p->lx.after_cr = p->lx.counted = p->lx.cr_before = 0;
 	p->lx.at_start = 1;
 	p->lx.length_shift = length_shift;
 	ok = 1;

@@ -322,7 +322,8 @@ if [ "$(ls -i first.ppm | cut -d' ' -f1)" = "$(ls -i second.ppm | cut -d' ' -f1)
 fi
 # A FIFO is written straight into, and its reader gets the image.
 if mkfifo pipe.ppm 2>/dev/null; then
-	cat pipe.ppm >from-pipe.ppm &
+	# The reader gives up after 10 s: a FIFO replaced by a file would block it forever.
+	timeout 10 cat pipe.ppm >from-pipe.ppm &
 	reader=$!
 	run "$tmp/ok.nff" -o pipe.ppm
 	wait "$reader"
@@ -457,6 +458,24 @@ run "$tmp/crlf.nff"
 expect_status "CRLF scene" 0
 expect_no_stderr "CRLF scene"
 expect_same "CRLF scene" "$tmp/ok.ppm" "$tmp/out"
+
+# Lone CRs end lines too (old Mac files): a comment ends at one, and errors name the line.
+{
+	printf '# a comment, then the scene\n'
+	cat "$tmp/ok.nff"
+} | tr '\n' '\r' >"$tmp/cr.nff"
+run "$tmp/cr.nff"
+expect_status "CR scene" 0
+expect_no_stderr "CR scene"
+expect_same "CR scene" "$tmp/ok.ppm" "$tmp/out"
+tr '\n' '\r' <"$tmp/bad.nff" >"$tmp/cr-bad.nff"
+run "$tmp/cr-bad.nff"
+expect_status "CR scene with an error" 1
+expect_err "CR scene with an error" "rt: $tmp/cr-bad.nff:9: "
+# CR LF counts one line, not two.
+sed 's/$/\r/' "$tmp/bad.nff" >"$tmp/crlf-bad.nff"
+run "$tmp/crlf-bad.nff"
+expect_err "CRLF scene with an error" "rt: $tmp/crlf-bad.nff:9: "
 
 run "$tmp/nonl.nff"
 expect_status "no final newline" 0
