@@ -524,14 +524,13 @@ static int parse_sphere(parser *p)
 }
 
 /* Newell's normal of vertices[0..count), as a unit vector; the zero vector when the
- * polygon has no area. Its components are areas (products of lengths), summed as real2
+ * polygon fills nothing (its vertices on one line). Its components are areas (products of lengths), summed as real2
  * and brought back to size by the largest before normalising. Axis by axis in a loop,
  * component k from the two axes after it: one copy of the arithmetic, not three. */
-static dir3 newell_normal(const vec3 *v, int count)
+static void newell_sums(const vec3 *v, int count, real2 n[3])
 {
-	real2 n[3] = {0, 0, 0}, largest = 0;
-	real part[3];
 	int i, k;
+	n[0] = n[1] = n[2] = 0;
 	for (i = 0; i < count; i++) {
 		/* The vertices by pointer: copies of them cost 20 bytes of M0 flash. */
 		const vec3 *a = &v[i], *b = &v[i + 1 == count ? 0 : i + 1];
@@ -543,6 +542,20 @@ static dir3 newell_normal(const vec3 *v, int count)
 					  real_add(vec_get(*a, m), vec_get(*b, m)));
 		}
 	}
+}
+
+static dir3 newell_normal(const vec3 *v, int count)
+{
+	real2 n[3], largest = 0;
+	real part[3];
+	int i, k;
+	newell_sums(v, count, n);
+	/* A signed area of zero need not mean nothing is filled: the even-odd rule fills
+	 * both lobes of a symmetric bow-tie, whose signed areas cancel. Its plane is then
+	 * that of the first three consecutive vertices not on one line; only a polygon
+	 * whose vertices all are fills nothing. */
+	for (i = 0; n[0] == 0 && n[1] == 0 && n[2] == 0 && i + 3 <= count && count > 3; i++)
+		newell_sums(v + i, 3, n);
 	for (k = 0; k < 3; k++)
 		largest = real_max(largest, n[k] < 0 ? -n[k] : n[k]);
 	if (!(largest > 0))

@@ -380,7 +380,7 @@ def parse_scene(path):
     return sc
 
 
-def newell(verts):
+def newell_sums(verts):
     nx = ny = nz = 0
     n = len(verts)
     for i in range(n):
@@ -389,6 +389,18 @@ def newell(verts):
         ny += (a[2] - b[2]) * (a[0] + b[0])
         nz += (a[0] - b[0]) * (a[1] + b[1])
     return (nx, ny, nz)
+
+
+def newell(verts):
+    """rt's polygon normal: Newell's; where the signed areas cancel (a symmetric bow-tie,
+    which the even-odd rule still fills), that of the first three consecutive vertices
+    not on one line; zero only when every vertex is on one line."""
+    n = newell_sums(verts)
+    i = 0
+    while n == (0, 0, 0) and len(verts) > 3 and i + 3 <= len(verts):
+        n = newell_sums(verts[i:i + 3])
+        i += 1
+    return n
 
 
 # ---- rays ---------------------------------------------------------------------------

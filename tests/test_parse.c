@@ -353,6 +353,12 @@ static void test_polygon(void)
 	CHECK_VEC(dir_to_vec(sc.objects[0].u.polygon.normal), 1, 0, 0);
 	EXPECT_WARNING(VIEW "p 4\n1 1 1\n1 1 1\n1 1 1\n1 1 1\n", 8, "polygon with zero area");
 	CHECK_INT(sc.object_count, 0);
+	/* A symmetric bow-tie: its signed areas cancel, but the even-odd rule fills both
+	 * lobes. It is kept, in the plane of its first corner (z = 0, normal +z there). */
+	EXPECT_OK(VIEW "p 4\n-1 -1 0\n1 1 0\n1 -1 0\n-1 1 0\n");
+	CHECK_INT(sc.object_count, 1);
+	CHECK_VEC(dir_to_vec(sc.objects[0].u.polygon.normal), 0, 0, -1);
+	CHECK_REAL(sc.objects[0].u.polygon.offset, 0, EPS);
 }
 
 static void test_patch(void)
