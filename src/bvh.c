@@ -349,8 +349,8 @@ static int box_hit_divided(const bvh_node *n, const slab_ray *r, real tmax, real
 		int near = axis == 0 ? r->near_x : axis == 1 ? r->near_y : r->near_z;
 		unit d = axis == 0 ? r->dir.x : axis == 1 ? r->dir.y : r->dir.z;
 		real o = vec_get(r->origin, axis);
-		real t0 = slab_distance(vec_get(n->bounds[near], axis) - o, d, 0);
-		real t1 = slab_distance(vec_get(n->bounds[!near], axis) - o, d, 1);
+		real t0 = slab_distance(real_add(vec_get(n->bounds[near], axis), -o), d, 0);
+		real t1 = slab_distance(real_add(vec_get(n->bounds[!near], axis), -o), d, 1);
 		tnear = t0 > tnear ? t0 : tnear;
 		tfar = t1 < tfar ? t1 : tfar;
 	}
@@ -370,12 +370,14 @@ static inline int box_hit(const bvh_node *n, const slab_ray *r, real tmax, real 
 	if (r->divided)
 		return box_hit_divided(n, r, tmax, tenter);
 #endif
-	x0 = real_mul(n->bounds[r->near_x].x - r->origin.x, r->inv.x);
-	x1 = real_mul(n->bounds[!r->near_x].x - r->origin.x, r->inv.x);
-	y0 = real_mul(n->bounds[r->near_y].y - r->origin.y, r->inv.y);
-	y1 = real_mul(n->bounds[!r->near_y].y - r->origin.y, r->inv.y);
-	z0 = real_mul(n->bounds[r->near_z].z - r->origin.z, r->inv.z);
-	z1 = real_mul(n->bounds[!r->near_z].z - r->origin.z, r->inv.z);
+	/* Saturating differences (real_add): a box of an object that reaches the edge of
+	 * fixed point's range, less a far origin, would overflow. */
+	x0 = real_mul(real_add(n->bounds[r->near_x].x, -r->origin.x), r->inv.x);
+	x1 = real_mul(real_add(n->bounds[!r->near_x].x, -r->origin.x), r->inv.x);
+	y0 = real_mul(real_add(n->bounds[r->near_y].y, -r->origin.y), r->inv.y);
+	y1 = real_mul(real_add(n->bounds[!r->near_y].y, -r->origin.y), r->inv.y);
+	z0 = real_mul(real_add(n->bounds[r->near_z].z, -r->origin.z), r->inv.z);
+	z1 = real_mul(real_add(n->bounds[!r->near_z].z, -r->origin.z), r->inv.z);
 	tnear = x0 > tnear ? x0 : tnear;
 	tnear = y0 > tnear ? y0 : tnear;
 	tnear = z0 > tnear ? z0 : tnear;

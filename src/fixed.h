@@ -571,7 +571,12 @@ FIXED_KERNEL int64_t fixed_dot3_wide(int32_t ax, int32_t ay, int32_t az, int32_t
 #if FIXED_NARROW
 	return fixed_dot3_wide_narrow(ax, ay, az, bx, by, bz);
 #else
-	return (int64_t)ax * bx + (int64_t)ay * by + (int64_t)az * bz;
+	/* Summed modulo 2^64, as the M0's parts are: each product is below 2^62, and only a
+	 * vector of three near-saturated components (far beyond any scene: a ray's sum that
+	 * saturated) takes the sum past 2^63. That wraps, a defined conversion on every
+	 * compiler rt builds with, where signed overflow would be undefined. */
+	return (int64_t)((uint64_t)((int64_t)ax * bx) + (uint64_t)((int64_t)ay * by) +
+			 (uint64_t)((int64_t)az * bz));
 #endif
 }
 
