@@ -122,6 +122,16 @@ static int choose_format(options *o, enum format f, const char *why)
 }
 
 /* Returns -1 to go on, else the exit status. */
+/* The exit status after a text answer on standard output (--help, --version, --size): 1,
+ * with a message, when it could not be written (a full disk, /dev/full). */
+static int stdout_status(void)
+{
+	if (fflush(stdout) == 0 && !ferror(stdout))
+		return 0;
+	diag_error(NULL, 0, "write error: standard output: %s", strerror(errno));
+	return 1;
+}
+
 static int parse_options(int argc, char **argv, options *o)
 {
 	int i, status;
@@ -131,10 +141,10 @@ static int parse_options(int argc, char **argv, options *o)
 		const char *value = NULL, *rest;
 		if (strcmp(a, "--help") == 0) {
 			fputs(usage_text, stdout);
-			return 0;
+			return stdout_status();
 		} else if (strcmp(a, "--version") == 0) {
 			printf("rt %s (real = %s)\n", RT_VERSION, REAL_NAME);
-			return 0;
+			return stdout_status();
 		} else if (strcmp(a, "--stats") == 0) {
 			o->stats = 1;
 		} else if (strcmp(a, "--size") == 0) {
@@ -156,6 +166,10 @@ static int parse_options(int argc, char **argv, options *o)
 				return usage_error("option '%s' needs a value", a);
 			if (strcmp(a, "-o") == 0) {
 				enum format f = format_of(value);
+				/* One image per run: a second -o is a mistake, not a choice. */
+				if (o->output_path)
+					return usage_error("more than one output file given ('%s')",
+							   value);
 				if (f == FORMAT_DEFAULT)
 					return usage_error("cannot tell the format of '%s' (name it "
 							   ".ppm, .png, .txt, .ans, or .pgm with --ids)",
@@ -270,7 +284,7 @@ int main(int argc, char **argv)
 	}
 	if (opt.size_only) {
 		printf("%d %d\n", width, height);
-		return fflush(stdout) == 0 ? 0 : 1;
+		return stdout_status();
 	}
 	if (opt.row_end > height) {
 		diag_error(NULL, 0, "--rows %d:%d is outside the image's %d rows", opt.row_first,
@@ -327,7 +341,7 @@ int main(int argc, char **argv)
 	if (!ok && target->error)
 		diag_error(opt.output_path, 0, "%s", target->error);
 	else if (!ok)
-		diag_error(NULL, 0, "write error: %s", strerror(errno));
+		output_report_error(&out);
 	if (!output_close(&out, ok))
 		return 1;
 	if (opt.stats)

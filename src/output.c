@@ -261,21 +261,29 @@ static int copy_into_target(output *out)
 	return ok;
 }
 
+void output_report_error(const output *out)
+{
+	if (out->path)
+		diag_error(out->path, 0, "write error: %s", strerror(errno));
+	else
+		diag_error(NULL, 0, "write error: standard output: %s", strerror(errno));
+}
+
 int output_close(output *out, int ok)
 {
 	int flushed = fflush(out->file) == 0 && !ferror(out->file);
 	if (ok && !flushed)
-		diag_error(out->path, 0, "write error: %s", strerror(errno));
+		output_report_error(out);
 	ok = ok && flushed;
 	if (out->mode == OUTPUT_STREAM) {
 		if (out->path && fclose(out->file) != 0 && ok) {
-			diag_error(out->path, 0, "write error: %s", strerror(errno));
+			output_report_error(out);
 			ok = 0;
 		}
 		return ok;
 	}
 	if (fclose(out->file) != 0 && ok) {
-		diag_error(out->path, 0, "write error: %s", strerror(errno));
+		output_report_error(out);
 		ok = 0;
 	}
 	if (ok && out->mode == OUTPUT_RENAME && rename(temp_path, out->target) != 0) {

@@ -27,6 +27,9 @@ int output_open(output *out, const char *path);
  * temporary file and leaves the target as it was. Reports a failure and returns 0. */
 int output_close(output *out, int ok);
 
+/* Reports a write error (errno's) on the output, naming the file or standard output. */
+void output_report_error(const output *out);
+
 /* A write callback for the sinks: ctx is the output. */
 int output_write(void *ctx, const void *data, size_t n);
 

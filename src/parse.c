@@ -401,10 +401,15 @@ static int parse_view(parser *p)
 		} else if (k < 5) {
 			if (!read_value(&p->lx, names[k], k == 4, k == 3 ? &v->angle : &v->hither))
 				return 0;
-			if (k == 3 && !(v->angle > REAL_C(0.0) && v->angle < REAL_C(180.0)))
+			if (k == 3 && !(v->angle > REAL_C(0.0) && v->angle < REAL_C(180.0))) {
+				/* Say what the type made of it: 179.99999999 is 180 in float. */
+				char held[32];
+				real_format(v->angle, 0, held, sizeof held);
 				return fail(&p->lx, p->lx.tok_line,
-					    "view angle must be between 0 and 180 degrees, got %s",
-					    p->lx.tok);
+					    "view angle must be between 0 and 180 degrees, got %s (%s "
+					    "in %s)",
+					    p->lx.tok, held, REAL_NAME);
+			}
 		} else {
 			if (!read_count(&p->lx, "resolution width", 1, RT_MAX_SCENE_WIDTH,
 					"RT_MAX_SCENE_WIDTH", &size))

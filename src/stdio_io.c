@@ -1,9 +1,12 @@
 /* stdio_io.c - the host's side of rt's I/O: scene files read through stdio, messages
  * to standard error. The microcontroller build has its own (src/mcu/semihost_io.c).
  * See LICENSE for copyright and licence. */
+#define _POSIX_C_SOURCE 200809L
+
 #include <errno.h>
 #include <stdio.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "diag.h"
 #include "parse.h"
@@ -23,9 +26,17 @@ typedef struct {
 static int file_open(void *ctx)
 {
 	file_reader *f = ctx;
+	struct stat st;
 	f->file = fopen(f->path, "rb");
 	if (!f->file) {
 		diag_error(f->path, 0, "cannot open: %s", strerror(errno));
+		return 0;
+	}
+	/* A folder opens, and then reads as an empty file ("no view"): say what it is. */
+	if (fstat(fileno(f->file), &st) == 0 && S_ISDIR(st.st_mode)) {
+		diag_error(f->path, 0, "cannot read: %s", strerror(EISDIR));
+		fclose(f->file);
+		f->file = NULL;
 		return 0;
 	}
 	return 1;

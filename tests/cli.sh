@@ -295,6 +295,15 @@ expect_no_stdout "-o into a missing directory"
 expect_err "-o into a missing directory" "rt: $tmp/no/such/dir/image.ppm: "
 if [ ! -e "$tmp/no" ]; then ok; else bad "-o into a missing directory: it was created"; fi
 
+# One output per run: a second -o is a usage error, not a silent choice.
+run "$tmp/ok.nff" -o "$tmp/o/a.ppm" -o "$tmp/o/b.ppm"
+expect_status "-o twice" 2
+expect_err "-o twice" "rt: more than one output file given ('$tmp/o/b.ppm')"
+# A folder as the scene says what it is (it opens, and reads as nothing).
+run "$tmp"
+expect_status "a folder as the scene" 1
+expect_err "a folder as the scene" "rt: $tmp: cannot read: Is a directory"
+
 # ---- -o behaves as the shell's > where a user expects it to -----------------------------
 mkdir "$tmp/rules"
 cd "$tmp/rules" || exit 1
@@ -393,6 +402,14 @@ cd - >/dev/null || exit 1
 
 # Standard output that cannot be written.
 if [ -w /dev/full ]; then
+	# The short answers too: a help, a version or a size that was not written is a failure.
+	for what in --help --version "--size $tmp/ok.nff"; do
+		# shellcheck disable=SC2086 # "--size FILE" is two words
+		"$RT" $what >/dev/full 2>"$tmp/err"
+		status=$?
+		expect_status "$what to /dev/full" 1
+		expect_err "$what to /dev/full" "rt: write error: standard output: "
+	done
 	"$RT" "$tmp/ok.nff" >/dev/full 2>"$tmp/err"
 	status=$?
 	expect_status "stdout to /dev/full" 1

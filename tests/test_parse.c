@@ -714,6 +714,17 @@ static void test_view_errors(void)
 	EXPECT_ERROR(VIEW_WITH("0 0 -10", "0 0 0", "0 1 0", "-30", "32 24"), 5,
 		     "view angle must be between 0 and 180 degrees, got -30");
 	EXPECT_OK(VIEW_WITH("0 0 -10", "0 0 0", "0 1 0", "179.9", "32 24"));
+	/* An angle the type rounds to 180 is refused with what it became, not as if the
+	 * text were out of range (float and Q16.16 hold 179.99999999 as 180). */
+#if defined(RT_REAL_FLOAT) || REAL_FIXED
+	EXPECT_ERROR(VIEW_WITH("0 0 -10", "0 0 0", "0 1 0", "179.99999999", "32 24"), 5,
+		     "got 179.99999999 (180");
+#else
+	EXPECT_OK(VIEW_WITH("0 0 -10", "0 0 0", "0 1 0", "179.99999999", "32 24"));
+#endif
+	/* Numbers are decimal in every build: no hexadecimal floats. */
+	EXPECT_ERROR(VIEW_WITH("0 0 -10", "0 0 0", "0 1 0", "0x28", "32 24"), 5,
+		     "expected a number (view angle), got '0x28'");
 	EXPECT_OK(VIEW_WITH("0 0 -10", "0 0 0", "0 1 0", "0.01", "32 24"));
 
 	EXPECT_ERROR(VIEW_WITH("0 0 -10", "0 0 0", "0 1 0", "45", "0 24"), 7,
