@@ -5,6 +5,7 @@
 #include "real.h" /* REAL_APART */
 
 #include <stdio.h>
+#include <string.h>
 
 static diag_sink_fn current_sink = diag_standard_error;
 static void *current_ctx;
@@ -47,14 +48,21 @@ static size_t append(char *buf, size_t size, size_t used, const char *fmt, ...)
 	return used;
 }
 
+/* The most of a file's name a message shows: a longer one keeps its end (the file's own
+ * name), so that the line number and the reason still fit the message. */
+#define DIAG_NAME_MAX 200
+
 static void emit(const char *file, int line, const char *kind, const char *fmt, va_list ap)
 {
 	char message[512];
-	size_t used;
+	size_t used, length = file ? strlen(file) : 0;
+	const char *cut = length > DIAG_NAME_MAX ? "..." : "";
+	if (*cut)
+		file += length - (DIAG_NAME_MAX - 3);
 	if (file && line > 0)
-		used = append(message, sizeof message, 0, "rt: %s:%d: %s", file, line, kind);
+		used = append(message, sizeof message, 0, "rt: %s%s:%d: %s", cut, file, line, kind);
 	else if (file)
-		used = append(message, sizeof message, 0, "rt: %s: %s", file, kind);
+		used = append(message, sizeof message, 0, "rt: %s%s: %s", cut, file, kind);
 	else
 		used = append(message, sizeof message, 0, "rt: %s", kind);
 	used = vappend(message, sizeof message, used, fmt, ap);

@@ -295,6 +295,16 @@ expect_no_stdout "-o into a missing directory"
 expect_err "-o into a missing directory" "rt: $tmp/no/such/dir/image.ppm: "
 if [ ! -e "$tmp/no" ]; then ok; else bad "-o into a missing directory: it was created"; fi
 
+# A path far longer than a message: its start is cut, the line and the reason stay.
+long=$tmp/$(awk 'BEGIN { while (length(s) < 250) s = s "d"; print s }')
+mkdir -p "$long/$(basename "$long")"
+long=$long/$(basename "$long")
+cp "$tmp/bad.nff" "$long/bad.nff"
+run "$long/bad.nff"
+expect_status "a 500-byte path" 1
+expect_err "a 500-byte path" "ddd/bad.nff:9: expected a number (sphere centre), got 'zero'"
+expect_err "a 500-byte path" "rt: ..."
+
 # One output per run: a second -o is a usage error, not a silent choice.
 run "$tmp/ok.nff" -o "$tmp/o/a.ppm" -o "$tmp/o/b.ppm"
 expect_status "-o twice" 2
