@@ -22,11 +22,12 @@ int cone_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h)
 	/* |fp + t dp|^2 = (radius_at_origin + slope dh t)^2, as a t^2 + 2 b t + cc = 0. */
 	real a = real_add(unit_to_real(dir_dot(dp, dp)), -real_mul(slope_dh, slope_dh)); /* unitless */
 	real b = real_add(dir_dot_vec(dp, fp), -real_mul(radius_at_origin, slope_dh));
-	real2 cc = vec_dot2(fp, fp) - real_mul2(radius_at_origin, radius_at_origin);
+	real2 cc = real2_sub(vec_dot2(fp, fp), real_mul2(radius_at_origin, radius_at_origin));
 	real roots[2];
 	int i;
 
-	if (!solve_quadratic(a, b, cc, real_mul2(b, b) - real2_scale(cc, a), &roots[0], &roots[1]))
+	if (!solve_quadratic(a, b, cc, real2_sub(real_mul2(b, b), real2_scale(cc, a)), &roots[0],
+			     &roots[1]))
 		return 0;
 	for (i = 0; i < 2; i++) {
 		real t = roots[i], height;

@@ -437,6 +437,15 @@ FIXED_KERNEL int32_t fixed_div(int32_t a, int32_t b);
 FIXED_KERNEL int32_t fixed_from_int(long i);
 FIXED_KERNEL int32_t fixed_div2(int64_t w, int32_t b);
 FIXED_KERNEL int64_t fixed_scale2(int64_t w, int32_t a);
+/* a - b, saturating to +-INT64_MAX instead of overflowing. */
+static inline int64_t fixed_sub2_sat(int64_t a, int64_t b)
+{
+	if (b < 0 && a > INT64_MAX + b)
+		return INT64_MAX;
+	if (b > 0 && a < -INT64_MAX + b)
+		return -INT64_MAX;
+	return a - b;
+}
 
 /* For dividing several numbers by one d (a vector by its length): one division, then a
  * product per number, within an LSB of dividing each (scale keeps 31 bits, not the 16 of

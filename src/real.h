@@ -112,6 +112,8 @@ typedef int64_t real2; /* Q32.32: squares and products of lengths */
 #define real2_div(w, b) fixed_div2((w), (b))
 #define real2_ratio(a, b) fixed_ratio2((a), (b))
 #define real2_scale(w, a) fixed_scale2((w), (a))
+/* a - b of two real2, saturating (a cone seen from far out takes its terms there). */
+#define real2_sub(a, b) fixed_sub2_sat((a), (b))
 /* Dividing several numbers by one: a reciprocal, then a product each. */
 typedef fixed_reciprocal real_reciprocal;
 #define real_reciprocal_of(d) fixed_reciprocal_of(d)
@@ -275,6 +277,7 @@ typedef real unit;
 #define real2_div(w, b) ((w) / (b))
 #define real2_ratio(a, b) ((a) / (b))
 #define real2_scale(w, a) ((w) * (a))
+#define real2_sub(a, b) ((a) - (b))
 /* Dividing several numbers by one: floating point keeps the divisor and divides each
  * (exactly rounded; a reciprocal would round twice). */
 typedef real real_reciprocal;
