@@ -57,7 +57,7 @@ int hedron_intersect(const scene *s, const object *o, const ray *r, real tmin, r
 
 	for (i = 0; i < count; i++) {
 		unit vd = dir_dot(planes[i].normal, r->dir);
-		real vn = dir_dot_vec(planes[i].normal, r->origin) - planes[i].offset;
+		real vn = -plane_gap(planes[i].normal, planes[i].offset, &r->origin);
 		if (vd == UNIT_C(0.0)) {
 			/* Parallel: outside this slab misses, inside it the plane does not clip. */
 			if (vn > REAL_C(0.0))

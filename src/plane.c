@@ -8,6 +8,11 @@
  * compute with). See LICENSE for copyright and licence. */
 #include "shape.h"
 
+real plane_gap(dir3 normal, real offset, const vec3 *origin)
+{
+	return real_add(offset, -dir_dot_vec(normal, *origin));
+}
+
 int plane_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h)
 {
 	return plane_intersect_from(o, r, NULL, tmin, tmax, h);
@@ -21,7 +26,7 @@ int plane_intersect_from(const object *o, const ray *r, const origin_term *k, re
 	real distance, t;
 	if (denom == UNIT_C(0.0))
 		return 0;
-	distance = k ? k->u.distance : pl->offset - dir_dot_vec(pl->normal, r->origin);
+	distance = k ? k->u.distance : plane_gap(pl->normal, pl->offset, &r->origin);
 	/* A plane behind the origin or through it (t <= 0) is no hit when tmin >= 0: known
 	 * from the signs, without dividing (costly on small cores). */
 	if (tmin >= REAL_C(0.0) && (distance > REAL_C(0.0)) != (denom > UNIT_C(0.0)))

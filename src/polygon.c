@@ -153,7 +153,7 @@ int polygon_intersect(const scene *s, const object *o, const ray *r, real tmin, 
 	 * (h == NULL) is blocked from either side: light does not pass through its back. */
 	if (denom > UNIT_C(0.0) && !(o->flags & OBJ_TWO_SIDED) && h)
 		return 0;
-	t = real_div_unit(poly->offset - dir_dot_vec(poly->normal, r->origin), denom);
+	t = real_div_unit(plane_gap(poly->normal, poly->offset, &r->origin), denom);
 	if (!(t > tmin && t < tmax))
 		return 0;
 	if (!polygon_contains_ray(s->vertices + poly->first, poly->count, r))

@@ -76,6 +76,10 @@ int cone_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h);
 REAL_APART int hedron_intersect(const scene *s, const object *o, const ray *r, real tmin,
 				real tmax, hit *h);
 int plane_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h);
+/* offset - n.origin: how far the plane n.x = offset lies ahead of the origin along n,
+ * saturating (an origin far beyond the scene, a hit whose point saturated, has a dot
+ * product at the edge of fixed point's range). One copy on the M0 (plane.c). */
+REAL_APART real plane_gap(dir3 normal, real offset, const vec3 *origin);
 
 /* Does the ray's line pass through the polygon with vertices[0 .. count)? The crossings
  * test in the ray's frame (polygon.c): the same answer for an edge or vertex in every
