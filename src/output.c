@@ -86,11 +86,12 @@ static int follow_links(const char *path, char *out, size_t size)
 {
 	char link[PATH_MAX];
 	int hops;
-	if (strlen(path) >= size) {
+	size_t length = strlen(path);
+	if (length >= size) {
 		errno = ENAMETOOLONG;
 		return 0;
 	}
-	strcpy(out, path);
+	memcpy(out, path, length + 1);
 	for (hops = 0; hops < 40; hops++) {
 		struct stat st;
 		ssize_t n;
