@@ -8,18 +8,13 @@
  * See LICENSE for copyright and licence. */
 #include "clearance.h"
 
+#include "shape.h"
+
 /* How far x lies outside [low, high] (0 inside). Plain differences: every coordinate is
  * within the scene's extent, which the type holds twice over (parse.c). */
 static real outside(real x, real low, real high)
 {
 	return real_max(REAL_C(0.0), real_max(low - x, x - high));
-}
-
-/* n.p - offset: how far p lies on the normal's side of a plane. One function for the
- * three shapes with planes (on the M0 each inlined copy cost its own argument set-up). */
-static real plane_side(const dir3 *n, real offset, const vec3 *p)
-{
-	return dir_dot_vec(*n, *p) - offset;
 }
 
 /* How far x lies outside the vertices' range along one axis. */
@@ -39,7 +34,7 @@ static real axis_gap(const vec3 *v, int count, int axis, real x)
 static real polygon_clearance(const scene *s, const polygon_shape *g, const vec3 *p)
 {
 	const vec3 *v = s->vertices + g->first;
-	real most = real_fabs(plane_side(&g->normal, g->offset, p));
+	real most = real_fabs(plane_gap(g->normal, g->offset, p));
 	int axis;
 	for (axis = 0; axis < 3; axis++) {
 		real gap = axis_gap(v, g->count, axis, vec_get(*p, axis));
@@ -56,7 +51,7 @@ static real hedron_clearance(const scene *s, const hedron_shape *g, const vec3 *
 	real most = -REAL_MAX;
 	int i;
 	for (i = 0; i < g->count; i++) {
-		real side = plane_side(&planes[i].normal, planes[i].offset, p);
+		real side = -plane_gap(planes[i].normal, planes[i].offset, p);
 		most = real_max(most, side);
 	}
 	return real_fabs(most);
@@ -101,7 +96,7 @@ real object_clearance(const scene *s, const object *o, const vec3 *p)
 	case SHAPE_HEDRON:
 		return hedron_clearance(s, &o->u.hedron, p);
 	case SHAPE_PLANE:
-		return real_fabs(plane_side(&o->u.plane.normal, o->u.plane.offset, p));
+		return real_fabs(plane_gap(o->u.plane.normal, o->u.plane.offset, p));
 	default:
 		return REAL_MAX;
 	}
