@@ -973,10 +973,11 @@ int parse_scene(scene *s, const char *file, read_fn read, void *ctx)
 }
 
 /* One whole pass over the source, from its start, at length scale 2^shift. */
-static int source_pass(scene *s, const char *name, const scene_source *source, int shift)
+static int source_pass(scene *s, const char *name, const scene_source *source, int shift,
+		       int again)
 {
 	int ok;
-	if (!source->open(source->ctx))
+	if (!source->open(source->ctx, again))
 		return 0;
 	ok = parse_pass(s, name, source->read, source->ctx, shift);
 	/* The source reports its own read error; it counts only if parsing went well. */
@@ -1024,20 +1025,20 @@ int parse_scene_source(scene *s, const char *name, const scene_source *source)
 	 * static analysis reports about a variable ("always false"). */
 	if (REAL_FIRST_PASS_SHIFT != 0) {
 		int shift = 0, ok, was_muted = diag_mute(1);
-		ok = source_pass(s, name, source, shift);
+		ok = source_pass(s, name, source, shift, 1);
 		if (!ok) {
 			shift = REAL_FIRST_PASS_SHIFT;
-			ok = source_pass(s, name, source, shift);
+			ok = source_pass(s, name, source, shift, 1);
 		}
 		diag_mute(was_muted);
-		if (!ok)
-			return source_pass(s, name, source, shift); /* again, to report the error */
+		if (!ok) /* again, to report the error */
+			return source_pass(s, name, source, shift, 0);
 		/* Every length read counts, also those of objects skipped at this scale. */
 		final_shift = real_length_shift(s->longest_length, shift);
 	} else {
 		final_shift = 0;
 	}
-	if (!source_pass(s, name, source, final_shift))
+	if (!source_pass(s, name, source, final_shift, 0))
 		return 0;
 	s->length_shift = final_shift;
 	scene_measure(s, &extent, &feature);
@@ -1064,8 +1065,9 @@ static int read_buffer(void *ctx)
 	return b->at < b->size ? b->data[b->at++] : -1;
 }
 
-static int buffer_open(void *ctx)
+static int buffer_open(void *ctx, int again)
 {
+	(void)again;
 	((buffer_reader *)ctx)->at = 0;
 	return 1;
 }

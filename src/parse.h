@@ -19,7 +19,9 @@ int parse_scene(scene *s, const char *file, read_fn read, void *ctx);
  * it; each reports its own failure through diag (naming the file) and returns 0. close
  * is told whether parsing went well and checks for a read error. */
 typedef struct {
-	int (*open)(void *ctx);
+	/* again: another pass may read the source from its start after this one (an input
+	 * that cannot be reopened must then be kept). */
+	int (*open)(void *ctx, int again);
 	read_fn read;
 	int (*close)(void *ctx, int ok);
 	void *ctx;

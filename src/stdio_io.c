@@ -17,60 +17,136 @@ void diag_standard_error(void *ctx, const char *message)
 	fputs(message, stderr);
 }
 
-/* A scene file, opened afresh for each pass. */
+/* A scene file. A regular file is opened afresh for each pass. An input that cannot be
+ * read twice (a pipe, a FIFO, a terminal) is read once, where the parser will read it
+ * again (fixed point measures the scene first): what a pass reads of it is kept in a
+ * temporary file, and the next pass reads that copy and then, where the copy ends, the
+ * input itself. So no pass reads further into the input than the parser asks for, and
+ * an endless input stops at its first error as it does in one pass. */
 typedef struct {
 	const char *path;
-	FILE *file;
+	FILE *file; /* the input; held across passes when it is not reopened */
+	FILE *copy; /* what the passes so far read of an input that is not reopened */
+	long copied; /* bytes in copy */
+	long at;     /* the bytes of copy this pass has read */
+	int reopen;  /* a regular file, or one read only once: no copy */
+	int writing; /* copy's last operation was a write (a seek must come between) */
 } file_reader;
 
-static int file_open(void *ctx)
+static int file_open(void *ctx, int again)
 {
 	file_reader *f = ctx;
 	struct stat st;
+	int known;
+	if (f->copy) {
+		f->at = 0;
+		f->writing = 0;
+		return fseek(f->copy, 0, SEEK_SET) == 0;
+	}
 	f->file = fopen(f->path, "rb");
 	if (!f->file) {
 		diag_error(f->path, 0, "cannot open: %s", strerror(errno));
 		return 0;
 	}
+	/* A file whose kind cannot be told is taken as a regular one. */
+	known = fstat(fileno(f->file), &st) == 0;
 	/* A folder opens, and then reads as an empty file ("no view"): say what it is. */
-	if (fstat(fileno(f->file), &st) == 0 && S_ISDIR(st.st_mode)) {
+	if (known && S_ISDIR(st.st_mode)) {
 		diag_error(f->path, 0, "cannot read: %s", strerror(EISDIR));
 		fclose(f->file);
 		f->file = NULL;
 		return 0;
+	}
+	f->reopen = !known || S_ISREG(st.st_mode) || !again;
+	if (!f->reopen) {
+		f->copy = tmpfile();
+		if (!f->copy) {
+			diag_error(f->path, 0, "cannot keep a copy of the input for its second "
+					       "reading: %s",
+				   strerror(errno));
+			fclose(f->file);
+			f->file = NULL;
+			return 0;
+		}
+		f->copied = f->at = 0;
+		f->writing = 0;
 	}
 	return 1;
 }
 
 static int file_read(void *ctx)
 {
-	int c = getc(((file_reader *)ctx)->file);
-	return c == EOF ? -1 : c;
+	file_reader *f = ctx;
+	int c;
+	if (f->reopen) {
+		c = getc(f->file);
+		return c == EOF ? -1 : c;
+	}
+	if (f->at < f->copied) {
+		if (f->writing && fseek(f->copy, f->at, SEEK_SET) != 0)
+			return -1;
+		f->writing = 0;
+		c = getc(f->copy);
+		if (c == EOF)
+			return -1;
+		f->at++;
+		return c;
+	}
+	c = getc(f->file);
+	if (c == EOF)
+		return -1;
+	if (!f->writing && fseek(f->copy, 0, SEEK_END) != 0)
+		return -1;
+	f->writing = 1;
+	if (putc(c, f->copy) == EOF)
+		return -1;
+	f->copied++;
+	f->at++;
+	return c;
+}
+
+/* Reports a read error of the input, or a failure of its copy, once parsing went well
+ * (after a parse error the reading stopped early; a read error would only repeat it). */
+static int file_check(file_reader *f, int ok)
+{
+	if (ok && ferror(f->file)) {
+		diag_error(f->path, 0, "read error");
+		return 0;
+	}
+	if (ok && f->copy && ferror(f->copy)) {
+		diag_error(f->path, 0, "cannot keep a copy of the input for its second reading");
+		return 0;
+	}
+	return 1;
 }
 
 static int file_close(void *ctx, int ok)
 {
 	file_reader *f = ctx;
-	int failed = ferror(f->file);
-	fclose(f->file);
-	f->file = NULL;
-	/* After a parse error the reading stopped early; a read error would only repeat it. */
-	if (ok && failed) {
-		diag_error(f->path, 0, "read error");
-		return 0;
+	int checked = file_check(f, ok);
+	if (f->reopen) {
+		fclose(f->file);
+		f->file = NULL;
 	}
-	return 1;
+	return checked;
 }
 
 int parse_scene_file(scene *s, const char *path)
 {
 	file_reader f;
 	scene_source source;
+	int ok;
+	memset(&f, 0, sizeof f);
 	f.path = path;
-	f.file = NULL;
 	source.open = file_open;
 	source.read = file_read;
 	source.close = file_close;
 	source.ctx = &f;
-	return parse_scene_source(s, path, &source);
+	ok = parse_scene_source(s, path, &source);
+	/* An input read through a copy stays open until the last pass is done. */
+	if (f.copy)
+		fclose(f.copy);
+	if (f.file)
+		fclose(f.file);
+	return ok;
 }

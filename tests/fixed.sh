@@ -112,5 +112,44 @@ if [ "${FP_CHECK:-1}" = 1 ] && command -v objdump >/dev/null 2>&1 && [ "$(uname 
 	if [ "$count" -eq 0 ]; then ok; else bad "$FIXED has $count floating-point instructions"; fi
 fi
 
+# An input that cannot be read twice (a pipe, a FIFO) is read once: fixed point's passes
+# read a kept copy of it. The scene's lengths need the coarse first pass (500,000 units).
+cat >"$tmp/pipe.nff" <<'EOF2'
+v from 0 -500000 100000 at 0 0 0 up 0 0 1 angle 40 hither 1 resolution 24 16
+b 0.1 0.2 0.3
+l 0 -300000 400000
+f 1 0.2 0.2 1 0 0 0 0
+s 0 0 50000 50000
+f 0.2 1 0.2 1 0 0 0 0
+p 4 -300000 -300000 0 300000 -300000 0 300000 300000 0 -300000 300000 0
+EOF2
+"$FIXED" "$tmp/pipe.nff" >"$tmp/file.ppm" 2>"$tmp/err"
+if cat "$tmp/pipe.nff" | "$FIXED" /dev/stdin >"$tmp/piped.ppm" 2>>"$tmp/err" &&
+	[ -s "$tmp/file.ppm" ] && cmp -s "$tmp/file.ppm" "$tmp/piped.ppm"; then ok; else
+	bad "scene from a pipe: not the image of the same file ($(head -n 2 "$tmp/err"))"
+fi
+if mkfifo "$tmp/fifo" 2>/dev/null; then
+	cat "$tmp/pipe.nff" >"$tmp/fifo" &
+	# A FIFO opened twice would wait for a second writer: bound the wait.
+	timeout 60 "$FIXED" "$tmp/fifo" >"$tmp/fifo.ppm" 2>"$tmp/err"
+	status=$?
+	if [ "$status" -eq 0 ] && cmp -s "$tmp/file.ppm" "$tmp/fifo.ppm"; then ok; else
+		bad "scene from a FIFO: status $status, not the file's image ($(head -n 2 "$tmp/err"))"
+	fi
+	wait
+fi
+# An error in a piped scene is reported once, on its line; an endless input stops there.
+printf 'v from 0 0 1 at 0 0 0 up 0 1 0 angle 40 hither 1 resolution 8 8\nbogus\n' |
+	"$FIXED" /dev/stdin >/dev/null 2>"$tmp/err"
+status=$?
+if [ "$status" -eq 1 ] && [ "$(wc -l <"$tmp/err")" -eq 1 ] &&
+	grep -q "^rt: /dev/stdin:2: unknown command 'bogus'" "$tmp/err"; then ok; else
+	bad "error in a piped scene: status $status, $(head -n 3 "$tmp/err")"
+fi
+if timeout 60 "$FIXED" /dev/zero >/dev/null 2>"$tmp/err" ||
+	! grep -q "^rt: /dev/zero:1: unexpected byte 0x00" "$tmp/err"; then
+	bad "endless input: $(head -n 2 "$tmp/err")"
+else ok; fi
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

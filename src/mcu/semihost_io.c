@@ -67,9 +67,11 @@ typedef struct {
 	unsigned char chunk[SCENE_CHUNK];
 } host_file;
 
-static int file_open(void *ctx)
+/* The host's files can be opened again for each pass. */
+static int file_open(void *ctx, int again)
 {
 	host_file *f = ctx;
+	(void)again;
 	f->handle = semihost_open(f->path, SEMIHOST_READ_BINARY);
 	f->failed = 0;
 	f->used = f->filled = 0;
