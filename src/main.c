@@ -41,6 +41,8 @@ static const char usage_text[] =
 	"               a render across processes: see tools/render-parallel)\n"
 	"  --spd        SPD testing procedure: corner rays, depth 5, no weight cutoff\n"
 	"  --stats      print ray counts and timings on standard error\n"
+	"  --time-limit S  stop after S seconds of wall-clock time (a decimal, e.g.\n"
+	"               2.5): exit status 1, no -o file written or replaced\n"
 	"  --size       print the image size the other options give, as 'W H', and exit\n"
 	"  --help       show this help and exit\n"
 	"  --version    show the version and exit\n"
@@ -63,6 +65,8 @@ typedef struct {
 	int spd;
 	int stats;
 	int size_only; /* --size: print the image size and stop */
+	const char *time_limit; /* --time-limit as given; NULL for none */
+	unsigned long long time_limit_micros;
 } options;
 
 /* Scene storage is large and lives for the whole run. */
@@ -93,6 +97,34 @@ static int parse_int(const char *text, char stop, long min, long max, int *out,
 	if (rest)
 		*rest = end + 1;
 	return 1;
+}
+
+/* The longest --time-limit, in seconds: about three years. */
+#define TIME_LIMIT_MAX_SECONDS 100000000uL
+
+/* Parses --time-limit's seconds, digits with an optional fraction (no floating point: the
+ * fixed-point build has none), into microseconds; 0 when it is not such a number, or not
+ * from a microsecond to TIME_LIMIT_MAX_SECONDS. Digits past the sixth decimal drop. */
+static unsigned long long parse_seconds(const char *text)
+{
+	unsigned long long seconds = 0, micros = 0;
+	const char *p = text;
+	if (*p < '0' || *p > '9')
+		return 0;
+	for (; *p >= '0' && *p <= '9'; p++) {
+		seconds = seconds * 10u + (unsigned)(*p - '0');
+		if (seconds > TIME_LIMIT_MAX_SECONDS)
+			return 0;
+	}
+	if (*p == '.') {
+		unsigned long long scale = 100000u; /* of the first decimal, in microseconds */
+		for (p++; *p >= '0' && *p <= '9'; p++, scale /= 10u)
+			micros += scale * (unsigned)(*p - '0');
+	}
+	if (*p != '\0')
+		return 0;
+	micros += seconds * 1000000u;
+	return micros > TIME_LIMIT_MAX_SECONDS * 1000000u ? 0 : micros;
 }
 
 /* The output format a file name asks for, by its ending. */
@@ -160,7 +192,8 @@ static int parse_options(int argc, char **argv, options *o)
 			if (status >= 0)
 				return status;
 		} else if (strcmp(a, "-o") == 0 || strcmp(a, "-s") == 0 || strcmp(a, "-d") == 0 ||
-			   strcmp(a, "--rows") == 0 || strcmp(a, "--cols") == 0) {
+			   strcmp(a, "--rows") == 0 || strcmp(a, "--cols") == 0 ||
+			   strcmp(a, "--time-limit") == 0) {
 			value = i + 1 < argc ? argv[++i] : NULL;
 			if (!value)
 				return usage_error("option '%s' needs a value", a);
@@ -189,6 +222,13 @@ static int parse_options(int argc, char **argv, options *o)
 				if (!parse_int(value, '\0', 1, RT_MAX_DEPTH, &o->depth, NULL))
 					return usage_error("bad depth '%s' (expected 1 to " RT_STRINGIFY(
 								   RT_MAX_DEPTH) ")",
+							   value);
+			} else if (strcmp(a, "--time-limit") == 0) {
+				o->time_limit = value;
+				o->time_limit_micros = parse_seconds(value);
+				if (!o->time_limit_micros)
+					return usage_error("bad time limit '%s' (expected seconds, e.g. "
+							   "2.5, from 0.000001 to 100000000)",
 							   value);
 			} else if (strcmp(a, "--cols") == 0) {
 				if (!parse_int(value, '\0', 1, RT_MAX_WIDTH, &o->columns, NULL))
@@ -266,6 +306,9 @@ int main(int argc, char **argv)
 
 	if (status >= 0)
 		return status;
+	if (opt.time_limit &&
+	    !output_time_limit(opt.scene_path, opt.time_limit_micros, opt.time_limit))
+		return 1;
 	start = term_micros();
 	if (!parse_scene_file(&the_scene, opt.scene_path))
 		return 1;

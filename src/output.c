@@ -21,6 +21,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <sys/time.h>
 #include <unistd.h>
 
 #include "diag.h"
@@ -58,6 +59,69 @@ static void remove_temp_and_end(int sig)
 	raise(sig);
 }
 
+/* --time-limit: a wall-clock timer whose SIGALRM ends the run with a message and exit
+ * status 1, removing the temporary file first; the message is made when the timer is
+ * armed, since the handler may only write it (and the ending that says what became of
+ * the output). */
+static char limit_message[512]; /* diag's longest message */
+static size_t limit_message_length;
+static volatile sig_atomic_t limit_armed;
+static volatile sig_atomic_t stream_open; /* an output written straight, as it renders */
+
+static void write_message(const char *text, size_t length)
+{
+	if (write(STDERR_FILENO, text, length) < 0)
+		return;
+}
+
+static void end_at_time_limit(int sig)
+{
+	static const char nothing[] = "; no image written\n";
+	static const char partly[] = "; the image written so far is incomplete\n";
+	(void)sig;
+	if (temp_live)
+		unlink(temp_path);
+	temp_live = 0;
+	write_message(limit_message, limit_message_length);
+	if (stream_open)
+		write_message(partly, sizeof partly - 1);
+	else
+		write_message(nothing, sizeof nothing - 1);
+	_exit(1);
+}
+
+/* A diag sink that keeps the message, formatted as every other, for the handler. */
+static void keep_limit_message(void *ctx, const char *message)
+{
+	size_t n = strlen(message);
+	(void)ctx;
+	if (n > 0 && message[n - 1] == '\n')
+		n--; /* the handler ends the line */
+	limit_message_length = n < sizeof limit_message ? n : sizeof limit_message;
+	memcpy(limit_message, message, limit_message_length);
+}
+
+int output_time_limit(const char *scene, unsigned long long micros, const char *as_given)
+{
+	struct sigaction action;
+	struct itimerval timer;
+	diag_set_sink(keep_limit_message, NULL);
+	diag_error(scene, 0, "the time limit of %s seconds was reached", as_given);
+	diag_set_sink(NULL, NULL);
+	memset(&action, 0, sizeof action);
+	action.sa_handler = end_at_time_limit;
+	sigemptyset(&action.sa_mask);
+	memset(&timer, 0, sizeof timer);
+	timer.it_value.tv_sec = (time_t)(micros / 1000000u);
+	timer.it_value.tv_usec = (suseconds_t)(micros % 1000000u);
+	if (sigaction(SIGALRM, &action, NULL) != 0 || setitimer(ITIMER_REAL, &timer, NULL) != 0) {
+		diag_error(NULL, 0, "cannot set the time limit: %s", strerror(errno));
+		return 0;
+	}
+	limit_armed = 1;
+	return 1;
+}
+
 static void catch_ending_signals(void)
 {
 	static int caught;
@@ -67,6 +131,9 @@ static void catch_ending_signals(void)
 	caught = 1;
 	for (i = 0; i < ENDING_SIGNALS; i++) {
 		struct sigaction action;
+		/* The time limit's own SIGALRM handler stays. */
+		if (limit_armed && ending_signals[i] == SIGALRM)
+			continue;
 		if (sigaction(ending_signals[i], NULL, &previous[i]) != 0)
 			continue;
 		/* A signal the caller ignores (nohup's SIGHUP, SIGINT for a background job)
@@ -152,8 +219,10 @@ int output_open(output *out, const char *path)
 	out->path = path;
 	out->mode = OUTPUT_STREAM;
 	out->file = stdout;
+	stream_open = 1;
 	if (!path)
 		return 1;
+	stream_open = 0;
 	exists = stat(path, &st) == 0;
 	if (exists && S_ISDIR(st.st_mode)) {
 		diag_error(path, 0, "cannot write: %s", strerror(EISDIR));
@@ -169,6 +238,7 @@ int output_open(output *out, const char *path)
 				close(fd);
 			return 0;
 		}
+		stream_open = 1;
 		return 1;
 	}
 	if (!follow_links(path, out->target, sizeof out->target)) {

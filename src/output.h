@@ -30,6 +30,13 @@ int output_close(output *out, int ok);
 /* Reports a write error (errno's) on the output, naming the file or standard output. */
 void output_report_error(const output *out);
 
+/* --time-limit: arms a wall-clock timer of `micros` that ends the run, from wherever it
+ * is (reading, building, tracing a pixel), with `rt: SCENE: the time limit of AS_GIVEN
+ * seconds was reached; no image written` and exit status 1, the temporary file removed.
+ * Rows already streamed to standard output or a FIFO stay there, and the message says
+ * the image is incomplete. 0, reported, if the timer cannot be set. */
+int output_time_limit(const char *scene, unsigned long long micros, const char *as_given);
+
 /* A write callback for the sinks: ctx is the output. */
 int output_write(void *ctx, const void *data, size_t n);
 

@@ -616,5 +616,38 @@ case $RT in
 	;;
 esac
 
+# ---- --time-limit ------------------------------------------------------------------
+# 1,000 concentric glass spheres at depth 8: about 10 s at 64x64 unbounded (each ray meets
+# every sphere); the limit ends it at 0.3 s wherever it is, the old file kept.
+{
+	printf 'v from 0 0 -30 at 0 0 0 up 0 1 0 angle 40 hither 0.01 resolution 64 64\n'
+	printf 'l -4 3 -20\nl 4 3 -20\nf 0.9 0.9 0.9 0.1 0.5 30 0.9 1.5\n'
+	awk 'BEGIN { for (i = 1; i <= 1000; i++) printf "s 0 0 0 %g\n", i * 0.01 }'
+} >"$tmp/slow.nff"
+mkdir "$tmp/limit"
+echo kept >"$tmp/limit/old.ppm"
+began=$(date +%s)
+run -d 8 --time-limit 0.3 -o "$tmp/limit/old.ppm" "$tmp/slow.nff"
+took=$(($(date +%s) - began))
+expect_status "--time-limit" 1
+expect_err "--time-limit" "slow.nff: the time limit of 0.3 seconds was reached; no image written"
+if [ "$took" -le 5 ]; then ok; else bad "--time-limit 0.3: took $took s"; fi
+if [ "$(cat "$tmp/limit/old.ppm")" = kept ] && [ "$(ls "$tmp/limit")" = old.ppm ]; then ok; else
+	bad "--time-limit: the old file or its folder changed: $(ls "$tmp/limit")"
+fi
+run -d 8 --time-limit 0.3 "$tmp/slow.nff"
+expect_status "--time-limit to stdout" 1
+expect_err "--time-limit to stdout" "the time limit of 0.3 seconds was reached; the image written so far is incomplete"
+# A limit that is not reached changes nothing.
+run --time-limit 1000 -s 31x17 scenes/glass.nff
+cp "$tmp/out" "$tmp/limited.ppm"
+run -s 31x17 scenes/glass.nff
+expect_same "--time-limit not reached" "$tmp/out" "$tmp/limited.ppm"
+for limit in 0 0.0000001 -1 abc 1.5s 2.5.1 .5 100000001 ''; do
+	run --time-limit "$limit" scenes/glass.nff
+	expect_status "--time-limit '$limit'" 2
+	expect_err "--time-limit '$limit'" "bad time limit"
+done
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
