@@ -93,6 +93,9 @@ VARIANT_FLAGS_ref = -DRT_REAL_LONG_DOUBLE
 # The fixed-point build has no floating point at all: on x86-64 the compiler proves it
 # (-mgeneral-regs-only refuses any float), and it needs no libm.
 VARIANT_FLAGS_fixed = -DRT_REAL_FIXED $(if $(filter x86_64,$(shell uname -m)),-mgeneral-regs-only)
+# For hosts with little address space (README, "Memory"): a 16 MiB PNG arena (PNG up to
+# 640x480 and a little more) and 4,096 objects.
+VARIANT_FLAGS_small = -DRT_REAL_DOUBLE -DRT_PNG_ARENA_BYTES=16777216L -DRT_MAX_OBJECTS=4096
 VARIANT_FLAGS_sphere-textbook = -DRT_REAL_DOUBLE -DRT_SPHERE_TEXTBOOK=1
 VARIANT_FLAGS_hedron-per-face = -DRT_REAL_DOUBLE -DRT_HEDRON_PER_FACE=1
 VARIANT_FLAGS_offset-fixed = -DRT_REAL_DOUBLE -DRT_OFFSET_FIXED=1
@@ -139,7 +142,7 @@ build/rt-%: $(SRC) $(wildcard src/*.h)
 
 test: rt build/unit-tests build/san/rt build/san/unit-tests build/san/replay build/san/replay-fixed \
       build/unit-tests-float build/unit-tests-ref build/unit-tests-fixed build/san/unit-tests-fixed build/rt-fixed build/rt-ref \
-      build/rt-float $(MSAN_TEST) $(MCU_TEST)
+      build/rt-float build/rt-small $(MSAN_TEST) $(MCU_TEST)
 	@sh tests/run.sh
 
 # Fuzzing with libFuzzer (clang): `make fuzz FUZZ_SECONDS=600` (FUZZ_TYPE=fixed fuzzes

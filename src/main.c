@@ -340,9 +340,9 @@ int main(int argc, char **argv)
 	}
 	if (opt.format == FORMAT_PNG && !png_fits(width, height)) {
 		diag_error(opt.output_path, 0,
-			   "%dx%d is too large for PNG output (the encoder's fixed memory, "
-			   "RT_PNG_ARENA_BYTES in src/config.h, holds about 2048x2048); write .ppm",
-			   width, height);
+			   "%dx%d is too large for PNG output in this build (the encoder's fixed "
+			   "memory, RT_PNG_ARENA_BYTES in src/config.h, is %ld MiB); write .ppm",
+			   width, height, (long)(RT_PNG_ARENA_BYTES >> 20));
 		return 1;
 	}
 	why = camera_init(&cam, &the_scene.camera, width, height);

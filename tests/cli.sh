@@ -649,5 +649,16 @@ for limit in 0 0.0000001 -1 abc 1.5s 2.5.1 .5 100000001 ''; do
 	expect_err "--time-limit '$limit'" "bad time limit"
 done
 
+# ---- memory --------------------------------------------------------------------------
+# The small-memory build (make build/rt-small) renders, PNG too, in 40 MB of address space,
+# where the default build (109 MiB of static arrays, README "Memory") cannot even start.
+if [ -x build/rt-small ]; then
+	if (ulimit -v 40000 && build/rt-small -s 64x48 -o "$tmp/small.png" scenes/glass.nff &&
+		build/rt-small -s 64x48 -o "$tmp/small.ppm" scenes/glass.nff) 2>"$tmp/err" &&
+		python3 tests/pngcheck.py "$tmp/small.png" "$tmp/small.ppm"; then ok; else
+		bad "build/rt-small under ulimit -v 40000: $(head -n 2 "$tmp/err")"
+	fi
+fi
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
