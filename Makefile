@@ -19,8 +19,22 @@ LIB_SRC = $(filter-out src/main.c,$(SRC))
 OBJ = $(SRC:src/%.c=build/obj/%.o)
 LIB_OBJ = $(LIB_SRC:src/%.c=build/obj/%.o)
 
+HDR = $(wildcard src/*.h)
 TEST_SRC = $(wildcard tests/*.c)
+TEST_HDR = $(wildcard tests/*.h)
 TEST_OBJ = $(TEST_SRC:tests/%.c=build/obj/tests/%.o)
+# The corpus replay: the fuzz harness's entry point (tests/fuzz/fuzz_scene.c) fed files.
+REPLAY_SRC = $(LIB_SRC) tests/fuzz/fuzz_scene.c tests/fuzz/replay.c
+LINK_LIBS = $(LDLIBS) $(RT_LDLIBS)
+
+# Besides the file-by-file builds (rt, the unit tests in double and Q16.16), every build
+# (number types, sanitizers, clang, fuzzing, the microcontroller) is a whole program in
+# one compiler call, made by this one recipe:
+# $(call whole-program,COMPILER,FLAGS,SOURCES,LIBRARIES) builds $@.
+define whole-program
+@mkdir -p $(@D)
+$(1) $(2) -o $@ $(3) $(4)
+endef
 
 # `make test` runs the MCU tests too (tests/mcu.sh) when the cross compiler is there.
 MCU_CC ?= arm-none-eabi-gcc
@@ -44,18 +58,17 @@ build/unit-tests: $(TEST_OBJ) $(LIB_OBJ)
 
 # The sanitizer build of everything, for the test run.
 SAN_FLAGS = -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g
-build/san/rt: $(SRC) $(wildcard src/*.h)
-	@mkdir -p $(@D)
-	$(CC) $(RT_CFLAGS) $(SAN_FLAGS) $(CPPFLAGS) -O1 -o $@ $(SRC) $(LDLIBS) $(RT_LDLIBS)
-build/san/unit-tests: $(SRC) $(TEST_SRC) $(wildcard src/*.h tests/*.h)
-	@mkdir -p $(@D)
-	$(CC) $(RT_CFLAGS) $(SAN_FLAGS) -Isrc $(CPPFLAGS) -O1 -o $@ $(LIB_SRC) $(TEST_SRC) $(LDLIBS) $(RT_LDLIBS)
-
+# A name ending in -fixed is the Q16.16 build ($* is then -fixed).
+SAN_CFLAGS = $(RT_CFLAGS) $(SAN_FLAGS) $(if $*,-DRT_REAL_FIXED)
+build/san/rt: $(SRC) $(HDR)
+	$(call whole-program,$(CC),$(RT_CFLAGS) $(SAN_FLAGS) $(CPPFLAGS) -O1,$(SRC),$(LINK_LIBS))
 # The fixed-point unit tests under the sanitizers too (integer overflow is what they
 # would catch there).
-build/san/unit-tests-fixed: $(SRC) $(TEST_SRC) $(wildcard src/*.h tests/*.h)
-	@mkdir -p $(@D)
-	$(CC) $(RT_CFLAGS) $(SAN_FLAGS) -DRT_REAL_FIXED -Isrc $(CPPFLAGS) -O1 -o $@ $(LIB_SRC) $(TEST_SRC) $(LDLIBS) $(RT_LDLIBS)
+build/san/unit-tests build/san/unit-tests-fixed: build/san/unit-tests%: $(SRC) $(TEST_SRC) \
+		$(HDR) $(TEST_HDR)
+	$(call whole-program,$(CC),$(SAN_CFLAGS) -Isrc $(CPPFLAGS) -O1,$(LIB_SRC) $(TEST_SRC),$(LINK_LIBS))
+build/san/replay build/san/replay-fixed: build/san/replay%: $(REPLAY_SRC) $(HDR)
+	$(call whole-program,$(CC),$(SAN_CFLAGS) -Isrc $(CPPFLAGS) -O1,$(REPLAY_SRC),$(LINK_LIBS))
 
 # MemorySanitizer (reads of uninitialised memory, which ASan cannot see) where clang is
 # present: unit tests, the corpus replay and the fixed-point program, in double and Q16.16.
@@ -64,26 +77,14 @@ MSAN_FLAGS = -fsanitize=memory -fsanitize-memory-track-origins -fno-omit-frame-p
 MSAN_BUILDS = build/msan/unit-tests build/msan/unit-tests-fixed build/msan/replay \
 	build/msan/replay-fixed build/msan/rt-fixed
 MSAN_TEST = $(if $(shell command -v $(MSAN_CC)),$(MSAN_BUILDS))
+MSAN_CFLAGS = $(WARN) -ffp-contract=off $(MSAN_FLAGS) $(if $*,-DRT_REAL_FIXED)
 build/msan/unit-tests build/msan/unit-tests-fixed: build/msan/unit-tests%: $(SRC) $(TEST_SRC) \
-		$(wildcard src/*.h tests/*.h)
-	@mkdir -p $(@D)
-	$(MSAN_CC) $(WARN) -ffp-contract=off $(MSAN_FLAGS) $(if $*,-DRT_REAL_FIXED) -Isrc -o $@ \
-		$(LIB_SRC) $(TEST_SRC) -lm
-build/msan/replay build/msan/replay-fixed: build/msan/replay%: $(LIB_SRC) tests/fuzz/fuzz_scene.c \
-		tests/fuzz/replay.c $(wildcard src/*.h)
-	@mkdir -p $(@D)
-	$(MSAN_CC) $(WARN) -ffp-contract=off $(MSAN_FLAGS) $(if $*,-DRT_REAL_FIXED) -Isrc -o $@ \
-		$(LIB_SRC) tests/fuzz/fuzz_scene.c tests/fuzz/replay.c -lm
-build/msan/rt-fixed: $(SRC) $(wildcard src/*.h)
-	@mkdir -p $(@D)
-	$(MSAN_CC) $(WARN) -ffp-contract=off $(MSAN_FLAGS) -DRT_REAL_FIXED -o $@ $(SRC) -lm
-
-build/san/replay: $(LIB_SRC) tests/fuzz/fuzz_scene.c tests/fuzz/replay.c $(wildcard src/*.h)
-	@mkdir -p $(@D)
-	$(CC) $(RT_CFLAGS) $(SAN_FLAGS) -Isrc $(CPPFLAGS) -O1 -o $@ $(LIB_SRC) tests/fuzz/fuzz_scene.c tests/fuzz/replay.c $(LDLIBS) $(RT_LDLIBS)
-build/san/replay-fixed: $(LIB_SRC) tests/fuzz/fuzz_scene.c tests/fuzz/replay.c $(wildcard src/*.h)
-	@mkdir -p $(@D)
-	$(CC) $(RT_CFLAGS) $(SAN_FLAGS) -DRT_REAL_FIXED -Isrc $(CPPFLAGS) -O1 -o $@ $(LIB_SRC) tests/fuzz/fuzz_scene.c tests/fuzz/replay.c $(LDLIBS) $(RT_LDLIBS)
+		$(HDR) $(TEST_HDR)
+	$(call whole-program,$(MSAN_CC),$(MSAN_CFLAGS) -Isrc,$(LIB_SRC) $(TEST_SRC),-lm)
+build/msan/replay build/msan/replay-fixed: build/msan/replay%: $(REPLAY_SRC) $(HDR)
+	$(call whole-program,$(MSAN_CC),$(MSAN_CFLAGS) -Isrc,$(REPLAY_SRC),-lm)
+build/msan/rt-fixed: $(SRC) $(HDR)
+	$(call whole-program,$(MSAN_CC),$(WARN) -ffp-contract=off $(MSAN_FLAGS) -DRT_REAL_FIXED,$(SRC),-lm)
 
 # One source, several builds: the number types and the naive algorithm forms, each a
 # whole program built in one compiler call (build/rt-NAME).
@@ -105,20 +106,20 @@ VARIANT_FLAGS_float-offset-fixed = -DRT_REAL_FLOAT -DRT_OFFSET_FIXED=1
 TYPES = float double ref fixed
 ALGORITHMS = sphere-textbook hedron-per-face offset-fixed float-textbook float-per-face \
 	     float-offset-fixed
+VARIANT_CFLAGS = $(WARN) -ffp-contract=off $(VARIANT_FLAGS_$*)
 
 variants: $(TYPES:%=build/rt-%)
 
 # The same strict warnings with clang (installed with apt-get if missing), every type.
-build/clang/rt-%: $(SRC) $(wildcard src/*.h)
+build/clang/rt-%: $(SRC) $(HDR)
 	@command -v clang >/dev/null || { apt-get update && apt-get install -y clang; }
-	@mkdir -p $(@D)
-	clang $(WARN) -ffp-contract=off $(VARIANT_FLAGS_$*) -O2 -o $@ $(SRC) -lm
+	$(call whole-program,clang,$(VARIANT_CFLAGS) -O2,$(SRC),-lm)
 check-clang: $(TYPES:%=build/clang/rt-%)
 
 # The unit tests in every number type (each type's tolerances are in the tests).
-build/unit-tests-%: $(LIB_SRC) $(TEST_SRC) $(wildcard src/*.h tests/*.h)
-	@mkdir -p $(@D)
-	$(CC) $(RT_CFLAGS) $(VARIANT_FLAGS_$*) -Isrc $(CPPFLAGS) $(CFLAGS) -o $@ $(LIB_SRC) $(TEST_SRC) $(LDLIBS) $(RT_LDLIBS)
+build/unit-tests-%: $(LIB_SRC) $(TEST_SRC) $(HDR) $(TEST_HDR)
+	$(call whole-program,$(CC),$(RT_CFLAGS) $(VARIANT_FLAGS_$*) -Isrc $(CPPFLAGS) $(CFLAGS), \
+		$(LIB_SRC) $(TEST_SRC),$(LINK_LIBS))
 # Q16.16: the library is built as build/rt-fixed is, with no floating point
 # (-mgeneral-regs-only on x86-64), file by file into build/fixed/. The tests themselves
 # cannot do without it: they build their reference rays, rotations and expected values
@@ -136,9 +137,8 @@ build/unit-tests-fixed: $(FIXED_TEST_OBJ) $(FIXED_LIB_OBJ)
 	$(CC) $(LDFLAGS) -o $@ $(FIXED_TEST_OBJ) $(FIXED_LIB_OBJ) $(LDLIBS) $(RT_LDLIBS)
 algorithms: $(ALGORITHMS:%=build/rt-%)
 
-build/rt-%: $(SRC) $(wildcard src/*.h)
-	@mkdir -p $(@D)
-	$(CC) $(WARN) -ffp-contract=off $(VARIANT_FLAGS_$*) $(CPPFLAGS) $(CFLAGS) -o $@ $(SRC) $(LDLIBS) $(RT_LDLIBS)
+build/rt-%: $(SRC) $(HDR)
+	$(call whole-program,$(CC),$(VARIANT_CFLAGS) $(CPPFLAGS) $(CFLAGS),$(SRC),$(LINK_LIBS))
 
 test: rt build/unit-tests build/san/rt build/san/unit-tests build/san/replay build/san/replay-fixed \
       build/unit-tests-float build/unit-tests-ref build/unit-tests-fixed build/san/unit-tests-fixed build/rt-fixed build/rt-ref \
@@ -152,11 +152,10 @@ FUZZ_SECONDS ?= 60
 FUZZ_TYPE ?= double
 FUZZ_CC ?= clang
 FUZZ_FLAGS = -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined -g -O1
-build/fuzz/fuzz-scene-%: $(LIB_SRC) tests/fuzz/fuzz_scene.c $(wildcard src/*.h)
+build/fuzz/fuzz-scene-%: $(LIB_SRC) tests/fuzz/fuzz_scene.c $(HDR)
 	@command -v $(FUZZ_CC) >/dev/null || { apt-get update && apt-get install -y clang; }
-	@mkdir -p $(@D)
-	$(FUZZ_CC) -std=c99 -Wall -Wextra -Werror -ffp-contract=off $(FUZZ_FLAGS) \
-		$(filter -D%,$(VARIANT_FLAGS_$*)) -Isrc -o $@ $(LIB_SRC) tests/fuzz/fuzz_scene.c -lm
+	$(call whole-program,$(FUZZ_CC),-std=c99 -Wall -Wextra -Werror -ffp-contract=off $(FUZZ_FLAGS) \
+		$(filter -D%,$(VARIANT_FLAGS_$*)) -Isrc,$(LIB_SRC) tests/fuzz/fuzz_scene.c,-lm)
 build/fuzz/fuzz-scene: build/fuzz/fuzz-scene-double
 	cp build/fuzz/fuzz-scene-double $@
 
@@ -224,12 +223,13 @@ MCU_CFLAGS = $(WARN) -Os -fno-inline-small-functions -fno-jump-tables --param ma
 # The whole program is optimised as one unit (-flto, one partition): 23% less flash than
 # file by file. Its stack use per function and call graph land in build/mcu/CPU/ for
 # tools/mcu-stack.
-MCU_LDFLAGS = -flto -flto-partition=one -fstack-usage -fcallgraph-info=su \
-	-nostdlib -nostartfiles -Wl,--gc-sections -Lsrc/mcu
+MCU_LINK = -nostdlib -nostartfiles -Wl,--gc-sections -Lsrc/mcu
+MCU_LDFLAGS = -flto -flto-partition=one -fstack-usage -fcallgraph-info=su $(MCU_LINK)
 MCU_CPU_m0 = cortex-m0
 MCU_CPU_m3 = cortex-m3
 MCU_BOARD_m0 = microbit
 MCU_BOARD_m3 = mps2-an385
+MCU_MAP = -Wl,-Map=$(@:.elf=.map)
 
 build/mcu/m0/libc.o build/mcu/m3/libc.o: build/mcu/%/libc.o: $(MCU_LIBC) | mcu-tools
 	@mkdir -p $(@D)
@@ -244,9 +244,9 @@ build/mcu/builtin-scene.c: $(SCENE) tools/scene2c FORCE
 	@cmp -s $@.new $@ && rm $@.new || mv $@.new $@
 build/mcu/rt-m0-builtin.elf: $(MCU_SRC) $(wildcard src/*.h src/mcu/*.h) build/mcu/m0/libc.o \
 		build/mcu/builtin-scene.c src/mcu/sections.ld src/mcu/microbit.ld
-	$(MCU_CC) $(MCU_CFLAGS) -mcpu=$(MCU_CPU_m0) -DRT_BUILTIN_SCENE=1 -flto $(filter-out \
-		-fstack-usage -fcallgraph-info=su,$(MCU_LDFLAGS)) -T microbit.ld -o $@ $(MCU_SRC) \
-		build/mcu/builtin-scene.c build/mcu/m0/libc.o -lgcc
+	$(call whole-program,$(MCU_CC),$(MCU_CFLAGS) -mcpu=$(MCU_CPU_m0) -DRT_BUILTIN_SCENE=1 -flto \
+		$(filter-out -fstack-usage -fcallgraph-info=su,$(MCU_LDFLAGS)) -T microbit.ld,$(MCU_SRC) \
+		build/mcu/builtin-scene.c build/mcu/m0/libc.o,-lgcc)
 mcu-builtin: build/mcu/rt-m0-builtin.elf
 FORCE:
 
@@ -255,9 +255,8 @@ build/mcu/rt-%.elf: $(MCU_SRC) $(wildcard src/*.h src/mcu/*.h) build/mcu/%/libc.
 		src/mcu/sections.ld src/mcu/$$(MCU_BOARD_$$*).ld
 	@mkdir -p build/mcu/$*
 	rm -f build/mcu/$*/*.ci build/mcu/$*/*.su
-	$(MCU_CC) $(MCU_CFLAGS) -mcpu=$(MCU_CPU_$*) -flto $(MCU_LDFLAGS) -T $(MCU_BOARD_$*).ld \
-		-Wl,-Map=build/mcu/rt-$*.map -dumpdir build/mcu/$*/ -o $@ $(MCU_SRC) \
-		build/mcu/$*/libc.o -lgcc
+	$(call whole-program,$(MCU_CC),$(MCU_CFLAGS) -mcpu=$(MCU_CPU_$*) -flto $(MCU_LDFLAGS) \
+		-T $(MCU_BOARD_$*).ld $(MCU_MAP) -dumpdir build/mcu/$*/,$(MCU_SRC) build/mcu/$*/libc.o,-lgcc)
 
 mcu: build/mcu/rt-m0.elf build/mcu/rt-m3.elf
 
@@ -268,21 +267,17 @@ MCU_KERNEL_SRC = tests/mcu/kernels.c tests/test_fixed.c src/fixed.c src/mcu/star
 	src/mcu/semihost.c
 build/mcu/kernels-%.elf: $(MCU_KERNEL_SRC) src/fixed.h tests/test.h build/mcu/%/libc.o \
 		src/mcu/sections.ld src/mcu/$$(MCU_BOARD_$$*).ld
-	$(MCU_CC) $(MCU_CFLAGS) -Itests -mcpu=$(MCU_CPU_$*) -nostdlib -nostartfiles \
-		-Wl,--gc-sections -Lsrc/mcu -T $(MCU_BOARD_$*).ld -o $@ $(MCU_KERNEL_SRC) \
-		build/mcu/$*/libc.o -lgcc
+	$(call whole-program,$(MCU_CC),$(MCU_CFLAGS) -Itests -mcpu=$(MCU_CPU_$*) $(MCU_LINK) \
+		-T $(MCU_BOARD_$*).ld,$(MCU_KERNEL_SRC) build/mcu/$*/libc.o,-lgcc)
 
 # The instruction-counting qemu plugin (tools/mcu-cost), built for the host.
 build/mcu/insncount.so: tools/mcu/insncount.c
-	@mkdir -p $(@D)
-	$(CC) -O2 -Wall -Wextra -shared -fPIC -o $@ tools/mcu/insncount.c
+	$(call whole-program,$(CC),-O2 -Wall -Wextra -shared -fPIC,tools/mcu/insncount.c,)
 
-# The host's twin of the MCU build: the same capacities and switches, for comparing
-# every scene of tests/bad and tests/good byte for byte (messages included).
-build/rt-fixed-mcu: $(SRC) $(wildcard src/*.h)
-	@mkdir -p $(@D)
-	$(CC) $(WARN) -ffp-contract=off $(VARIANT_FLAGS_fixed) $(MCU_DEFINES) $(CPPFLAGS) $(CFLAGS) \
-		-o $@ $(SRC) $(LDLIBS) $(RT_LDLIBS)
+# The host's twin of the MCU build (build/rt-fixed-mcu, made as the other variants are):
+# the same capacities and switches, for comparing every scene of tests/bad and tests/good
+# byte for byte (messages included).
+VARIANT_FLAGS_fixed-mcu = $(VARIANT_FLAGS_fixed) $(MCU_DEFINES)
 
 # qemu-system-arm is installed from Debian's packages when missing.
 mcu-ready: mcu mcu-builtin build/mcu/kernels-m0.elf build/mcu/kernels-m3.elf build/rt-fixed \
