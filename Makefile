@@ -2,7 +2,8 @@
 # The user owns CC, CFLAGS, CPPFLAGS, LDFLAGS and LDLIBS; rt's own flags come first.
 # This file builds, tests and installs rt; the other builds are in mk/: variants.mk
 # (number types, algorithm forms, clang, sanitizers), mcu.mk (the microcontroller) and
-# dev.mk (fuzzing, static analysis).
+# dev.mk (fuzzing, static analysis). A program a target needs and lacks is installed by
+# tools/need.
 
 PREFIX ?= /usr/local
 BINDIR = $(PREFIX)/bin

@@ -9,7 +9,7 @@ FUZZ_TYPE ?= double
 FUZZ_CC ?= clang
 FUZZ_FLAGS = -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined -g -O1
 build/fuzz/fuzz-scene-%: $(LIB_SRC) tests/fuzz/fuzz_scene.c $(HDR)
-	@command -v $(FUZZ_CC) >/dev/null || { apt-get update && apt-get install -y clang; }
+	@sh tools/need $(FUZZ_CC) clang
 	$(call whole-program,$(FUZZ_CC),-std=c99 -Wall -Wextra -Werror -ffp-contract=off $(FUZZ_FLAGS) \
 		$(filter -D%,$(VARIANT_FLAGS_$*)) -Isrc,$(LIB_SRC) tests/fuzz/fuzz_scene.c,-lm)
 build/fuzz/fuzz-scene: build/fuzz/fuzz-scene-double
@@ -26,7 +26,7 @@ fuzz-merge: build/fuzz/fuzz-scene
 
 # Static analysis of src/: cppcheck and clang-tidy, each clean with a short suppression
 # list that says why (tests/lint/cppcheck.supp, .clang-tidy). Installs the tools from
-# Debian's packages when they are missing.
+# Debian's packages when they are missing (tools/need).
 CPPCHECK ?= cppcheck
 CLANG_TIDY ?= clang-tidy
 # cppcheck checks the floating-point configurations, then Q16.16 fixed point on its own.
@@ -34,8 +34,8 @@ CPPCHECK_FLAGS = --enable=warning,style,performance,portability --std=c99 --erro
 	--inline-suppr --suppressions-list=tests/lint/cppcheck.supp --config-exclude=src/vendor \
 	--quiet -Isrc
 lint:
-	@command -v $(CPPCHECK) >/dev/null || { apt-get update && apt-get install -y cppcheck; }
-	@command -v $(CLANG_TIDY) >/dev/null || { apt-get update && apt-get install -y clang-tidy; }
+	@sh tools/need $(CPPCHECK) cppcheck
+	@sh tools/need $(CLANG_TIDY) clang-tidy
 	$(CPPCHECK) $(CPPCHECK_FLAGS) -URT_REAL_FIXED $(SRC)
 	$(CPPCHECK) $(CPPCHECK_FLAGS) -DRT_REAL_FIXED $(SRC)
 	@# The microcontroller's own files, as its build sees them (clang-tidy is left out:

@@ -92,14 +92,13 @@ build/mcu/insncount.so: tools/mcu/insncount.c
 # byte for byte (messages included).
 VARIANT_FLAGS_fixed-mcu = $(VARIANT_FLAGS_fixed) $(MCU_DEFINES)
 
-# qemu-system-arm is installed from Debian's packages when missing.
+# qemu-system-arm is installed from Debian's packages when missing (tools/need).
 mcu-ready: mcu mcu-builtin build/mcu/kernels-m0.elf build/mcu/kernels-m3.elf build/rt-fixed \
 		build/rt-fixed-mcu
-	@command -v qemu-system-arm >/dev/null || { apt-get update && apt-get install -y qemu-system-arm; }
+	@sh tools/need qemu-system-arm
 # The cross compiler and the C headers it needs, likewise.
 mcu-tools:
-	@command -v $(MCU_CC) >/dev/null || { apt-get update && \
-		apt-get install -y gcc-arm-none-eabi libnewlib-arm-none-eabi; }
+	@sh tools/need $(MCU_CC) gcc-arm-none-eabi libnewlib-arm-none-eabi
 test-mcu: mcu-ready
 	@sh tests/mcu.sh
 

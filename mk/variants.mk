@@ -25,9 +25,9 @@ VARIANT_CFLAGS = $(WARN) -ffp-contract=off $(VARIANT_FLAGS_$*)
 
 variants: $(TYPES:%=build/rt-%)
 
-# The same strict warnings with clang (installed with apt-get if missing), every type.
+# The same strict warnings with clang (installed by tools/need if missing), every type.
 build/clang/rt-%: $(SRC) $(HDR)
-	@command -v clang >/dev/null || { apt-get update && apt-get install -y clang; }
+	@sh tools/need clang
 	$(call whole-program,clang,$(VARIANT_CFLAGS) -O2,$(SRC),-lm)
 check-clang: $(TYPES:%=build/clang/rt-%)
 
