@@ -219,10 +219,9 @@ int output_open(output *out, const char *path)
 	out->path = path;
 	out->mode = OUTPUT_STREAM;
 	out->file = stdout;
-	stream_open = 1;
+	stream_open = path == NULL;
 	if (!path)
 		return 1;
-	stream_open = 0;
 	exists = stat(path, &st) == 0;
 	if (exists && S_ISDIR(st.st_mode)) {
 		diag_error(path, 0, "cannot write: %s", strerror(EISDIR));

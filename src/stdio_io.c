@@ -68,8 +68,6 @@ static int file_open(void *ctx, int again)
 			f->file = NULL;
 			return 0;
 		}
-		f->copied = f->at = 0;
-		f->writing = 0;
 	}
 	return 1;
 }
