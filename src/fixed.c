@@ -382,6 +382,8 @@ int32_t fixed_parse(const char *s, const char **end, int shift, int *overflow)
 		*overflow = 1;
 		return 0;
 	}
+	/* A mantissa that was not zero rounded to 0: too small (-1). */
+	*overflow = -(result == 0);
 	return (int32_t)(negative ? -result : result);
 }
 
@@ -404,7 +406,8 @@ int fixed_from_text(const char *text, int shift, int32_t *out)
 	*out = fixed_parse(text, &end, shift, &overflow);
 	if (end == text || *end != '\0')
 		return 1;
-	return overflow ? 3 : 0;
+	/* 3 and 4: REAL_TEXT_OUT_OF_RANGE and REAL_TEXT_TINY (real.h). */
+	return overflow > 0 ? 3 : overflow < 0 ? 4 : 0;
 }
 
 int32_t fixed_ldexp(int32_t x, int e)

@@ -719,7 +719,8 @@ void fixed_sin_cos_half_angle(int32_t degrees, int32_t *sine, int32_t *cosine);
 
 /* Reads a decimal number (sign, digits, point, exponent) as Q16.16 times 2^shift,
  * rounded; *end is set after the last character used (to s when there is no number).
- * *overflow is set when the value does not fit. */
+ * *overflow is 1 when the value does not fit, -1 when a number that is not zero rounds
+ * to 0, else 0. */
 int32_t fixed_parse(const char *s, const char **end, int shift, int *overflow);
 
 /* A whole token as Q16.16 times 2^shift: 0 ok, 1 not a number, 2 out of range. */

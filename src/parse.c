@@ -36,6 +36,7 @@ typedef struct {
 	int failed;    /* an error was reported */
 	int length_shift; /* lengths are read times 2^length_shift (fixed point's scale) */
 	real longest;     /* the largest length read, in magnitude (skipped objects too) */
+	int tiny_line;    /* line of the last number too small for the type (read as 0) */
 } lexer;
 
 static int next_byte(lexer *lx)
@@ -201,12 +202,18 @@ static int read_value(lexer *lx, const char *what, int length, real *out)
 	if (!next_value(lx, what, 0))
 		return 0;
 	status = real_from_text(lx->tok, shift, out);
+	/* Underflow to zero is no error, but a zero it makes is named for what it is
+	 * (zero_word). */
+	if (status == REAL_TEXT_TINY) {
+		lx->tiny_line = lx->tok_line;
+		status = REAL_TEXT_OK;
+	}
 	if (status == REAL_TEXT_OK) {
 		if (length)
 			lx->longest = real_max(lx->longest, real_fabs(*out));
 		return 1;
 	}
-	/* Underflow to a tiny value is harmless; overflow, NaN and infinity are not. */
+	/* Overflow, NaN and infinity are errors. */
 	out_of_range = status == REAL_TEXT_OUT_OF_RANGE;
 	return fail(lx, lx->tok_line, "expected a number (%s)%s%s, got '%s'%s", what,
 		    out_of_range ? " within " : "", out_of_range ? REAL_RANGE_TEXT : "", lx->tok,
@@ -363,6 +370,26 @@ static object *new_object(parser *p, unsigned char kind, int line)
 	return o;
 }
 
+/* A zero that numbers too small for the type made: one read as 0, or a vector (`v`, not
+ * all zero) whose squared length underflows. */
+static const char too_small[] = "too small to represent in " REAL_NAME;
+
+/* "zero", or why it is zero when it is not exactly (see too_small): a number read as 0 on
+ * or after `line` (where the entity, or the polyhedron's row, starts), or `nonzero`, a
+ * vector that is not all zero where the squares of numbers can underflow (not_all_zero).
+ * One copy for its three callers (REAL_APART). */
+REAL_APART static const char *zero_word(const parser *p, int line, int nonzero)
+{
+	return p->lx.tiny_line >= line || nonzero ? too_small : "zero";
+}
+
+/* Is v not all zero, where that can mean its squared length underflowed (in fixed point
+ * products are exact: never)? */
+static int not_all_zero(vec3 v)
+{
+	return REAL_SQUARES_UNDERFLOW && (v.x != 0 || v.y != 0 || v.z != 0);
+}
+
 static void warn(parser *p, int line, const char *what)
 {
 	diag_warning(p->lx.file, line, "%s; skipped", what);
@@ -382,12 +409,9 @@ static int parse_view(parser *p)
 	p->view_line = p->lx.tok_line;
 	for (k = 0; k < 6; k++) {
 		const char *key = names[k] + 5;
-		if (!next_token(&p->lx)) {
-			if (p->lx.failed)
-				return 0;
-			return fail(&p->lx, p->lx.tok_line,
-				    "view: unexpected end of file (expected '%s')", key);
-		}
+		/* At the end of the file: "expected view from", as a number is named. */
+		if (!next_value(&p->lx, names[k], 1))
+			return 0;
 		if (strcmp(p->lx.tok, key) != 0)
 			return fail(&p->lx, p->lx.tok_line, "view: expected '%s', got '%s'", key,
 				    p->lx.tok);
@@ -426,7 +450,8 @@ static int parse_view(parser *p)
 		vec3 dir = vec_sub(v->at, v->from);
 		dir3 side = dir_cross(dir_normalize(dir), dir_normalize(v->up));
 		if (!(vec_dot2(dir, dir) > 0))
-			return fail(&p->lx, p->view_line, "view: 'from' and 'at' are the same point");
+			return fail(&p->lx, p->view_line, "view: the distance from 'from' to 'at' is %s",
+				    zero_word(p, p->view_line, not_all_zero(dir)));
 		if (!(unit_sqrt(dir_dot(side, side)) > UNIT_C(1e-9)))
 			return fail(&p->lx, p->view_line,
 				    "view: 'up' is zero or parallel to the view direction");
@@ -487,8 +512,7 @@ static int parse_material(parser *p)
 		return 0;
 	if (m.kt > REAL_C(0.0) && !(m.ior > REAL_C(0.0)))
 		return fail(&p->lx, p->lx.tok_line,
-			    "material: a transmitting material (T > 0) needs an index of refraction "
-			    "> 0, got %s",
+			    "material: T > 0 needs an index of refraction > 0, got %s",
 			    p->lx.tok);
 	/* ior means nothing for opaque materials (SPD writes 0 or 1): store 1 so they share. */
 	if (m.kt <= REAL_C(0.0))
@@ -709,7 +733,8 @@ static int add_halfspace(parser *p, vec3 n, real d, int line)
 	real2 length2 = vec_dot2(n, n);
 	real_reciprocal per_length;
 	if (!(length2 > 0))
-		return fail(&p->lx, p->lx.tok_line, "polyhedron: a plane normal is zero");
+		return fail(&p->lx, p->lx.tok_line, "polyhedron: a plane normal is %s",
+			    zero_word(p, p->lx.tok_line, not_all_zero(n)));
 	if (s->plane_count == RT_MAX_PLANES)
 		return capacity_error(p, line, "polyhedron planes in the scene", "RT_MAX_PLANES",
 				      RT_MAX_PLANES);
@@ -788,7 +813,8 @@ static int parse_plane(parser *p)
 	    !read_triple(&p->lx, "plane normal", 0, &normal))
 		return 0;
 	if (!(vec_dot2(normal, normal) > 0))
-		return fail(&p->lx, line, "plane: the normal is zero");
+		return fail(&p->lx, line, "plane: the normal is %s",
+			    zero_word(p, line, not_all_zero(normal)));
 	o = new_object(p, SHAPE_PLANE, line);
 	if (!o)
 		return 0;
@@ -924,8 +950,7 @@ static int parse_entity(parser *p)
 	/* In a token stream an extra number is read as a command: say so. */
 	if (is_number(cmd))
 		return fail(&p->lx, p->lx.tok_line,
-			    "unknown command '%s' (a number where a command belongs: one number "
-			    "too many before it?)",
+			    "unknown command '%s' (a number: one too many before it?)",
 			    cmd);
 	return fail(&p->lx, p->lx.tok_line, "unknown command '%s'", cmd);
 }

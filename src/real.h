@@ -16,6 +16,7 @@
 #define REAL_TEXT_NOT_A_NUMBER 1
 #define REAL_TEXT_NOT_FINITE 2   /* NaN, infinity, or too large for any type */
 #define REAL_TEXT_OUT_OF_RANGE 3 /* finite, but beyond what this build reads */
+#define REAL_TEXT_TINY 4 /* not zero, but read as 0: too small for this build */
 
 /* Smaller and larger of two numbers of any of the types below (a macro, for real, unit
  * and real2 alike). */
@@ -85,6 +86,7 @@ typedef int32_t real;
 typedef int64_t real2; /* Q32.32: squares and products of lengths */
 #define REAL_NAME "Q16.16 fixed point"
 #define REAL_FIXED 1
+#define REAL_SQUARES_UNDERFLOW 0 /* products are exact in 64 bits (real2) */
 /* Small flash (the M0): vec.h's operations become single out-of-line copies (vec.c). */
 #define REAL_OUTLINE FIXED_NARROW
 #define REAL_C(x) ((real)((x) * 65536.0 + ((x) < 0 ? -0.5 : 0.5)))
@@ -214,6 +216,12 @@ static inline int real_from_text(const char *text, int shift, real *out)
 		return REAL_TEXT_NOT_A_NUMBER;
 	if (!real_isfinite(*out))
 		return REAL_TEXT_NOT_FINITE;
+	if (*out == REAL_C(0.0)) {
+		/* Underflow: a digit 1 to 9 before any exponent. */
+		for (c = text; *c && *c != 'e' && *c != 'E'; c++)
+			if (*c >= '1' && *c <= '9')
+				return REAL_TEXT_TINY;
+	}
 	return real_fabs(*out) <= REAL_INPUT_LIMIT ? REAL_TEXT_OK : REAL_TEXT_OUT_OF_RANGE;
 }
 #define REAL_RANGE_TEXT "+-1e12"
@@ -263,6 +271,7 @@ typedef real unit;
 #define unit_reciprocal(r) (r)
 #define REAL_FIXED 0
 #define REAL_OUTLINE 0
+#define REAL_SQUARES_UNDERFLOW 1 /* a number's square can round to 0 */
 #define real_mul(a, b) ((a) * (b))
 #define real_add(a, b) ((a) + (b))
 #define real_div(a, b) ((a) / (b))

@@ -222,7 +222,10 @@ static void test_parsing(void)
 	CHECK_INT(v, Q(-2.25));
 	CHECK_INT(fixed_from_text("1e-3", 0, &v), 0);
 	CHECK_INT(v, 66);
-	CHECK_INT(fixed_from_text("1.11022e-16", 0, &v), 0);
+	/* Too small: read as 0, and said so (REAL_TEXT_TINY); zero itself is no underflow. */
+	CHECK_INT(fixed_from_text("1.11022e-16", 0, &v), 4);
+	CHECK_INT(v, 0);
+	CHECK_INT(fixed_from_text("0.000e-9", 0, &v), 0);
 	CHECK_INT(v, 0);
 	/* A length scale: 0.006 read at 2^8. */
 	CHECK_INT(fixed_from_text("0.006", 8, &v), 0);

@@ -323,7 +323,7 @@ static void test_nan_inf(void)
 	 * rays, and is refused. */
 	CHECK(!parse_quietly("v\nfrom 0 0 5\nat 0 0 5\nup 0 1 0\nangle 45\nhither 1\n"
 			     "resolution 4 4\n"));
-	CHECK(strstr(last_message, "same point") != NULL);
+	CHECK(strstr(last_message, "from 'from' to 'at' is zero") != NULL);
 }
 
 /* Reflection keeps the tangential part and flips the normal part. */
