@@ -738,11 +738,11 @@ static void test_view_errors(void)
 	/* Degenerate cameras are reported at the `v` line. */
 	EXPECT_ERROR(VIEW_WITH("1 2 3", "1 2 3", "0 1 0", "45", "32 24"), 1,
 		     "view: the distance from 'from' to 'at' is zero");
-	/* Numbers too small for the type are named so, in every type: 1e-200 is a double,
-	 * whose square is not; it is no float and no Q16.16. */
-	EXPECT_ERROR(VIEW_WITH("0 0 1e-200", "0 0 0", "0 1 0", "45", "32 24"), 1,
+	/* Numbers too small for the type are named so, in every type: 1e-3000 is a long
+	 * double, whose square is not; it is no double, no float and no Q16.16. */
+	EXPECT_ERROR(VIEW_WITH("0 0 1e-3000", "0 0 0", "0 1 0", "45", "32 24"), 1,
 		     "view: the distance from 'from' to 'at' is too small to represent in ");
-	EXPECT_ERROR(VIEW "plane 0 0 0 0 1e-200 0\n", 8,
+	EXPECT_ERROR(VIEW "plane 0 0 0 0 1e-3000 0\n", 8,
 		     "plane: the normal is too small to represent in ");
 	EXPECT_ERROR(VIEW "plane 0 0 0 0 -0.0e-400 0\n", 8, "plane: the normal is zero");
 	EXPECT_ERROR(VIEW_WITH("0 0 -10", "0 0 0", "0 0 2", "45", "32 24"), 1,
