@@ -1,7 +1,7 @@
 /* clearance.c - how far a point is from the nearest surface of the scene, from below.
  * Lights need it for their shadow segments (trace.c): a light nearer a surface than a
  * ray's offset gets segments that end exactly at it. Fixed point needs it to refuse an eye
- * or a light that its numbers cannot place off a surface (parse.c).
+ * or a light that its numbers cannot place off a surface (load.c).
  * Each bound is a distance the surface cannot be nearer than (to rounding): a plane's, a
  * box's, a slab's; never more than the true distance, often much less far away, where
  * it does not matter.

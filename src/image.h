@@ -1,4 +1,4 @@
-/* image.h - from linear colour to bytes: sRGB encoding and the PPM writer.
+/* image.h - the PPM writer and the object-ID (PGM) writer.
  * Writers take a callback (stb's *_to_func style) so tests capture bytes in memory.
  * See LICENSE for copyright and licence. */
 #ifndef RT_IMAGE_H
@@ -8,17 +8,6 @@
 
 #include "sink.h"
 #include "vec.h"
-
-
-/* Linear [0, 1] (clamped) to an 8-bit sRGB code value, rounded to nearest. */
-unsigned char image_srgb_byte(real linear);
-
-/* Scene colours (surface and background) are written as sRGB values, as colour pickers
- * give them; lighting is done in linear light. This decodes one colour for the tracer. */
-vec3 image_srgb_to_linear(vec3 srgb);
-
-/* Encodes `count` colours as RGB bytes. */
-void image_encode_row(const vec3 *colors, int count, unsigned char *bytes);
 
 /* Binary PPM: P6, maxval 255, then the rows. */
 int ppm_write_header(write_fn write, void *ctx, int width, int height);

@@ -10,8 +10,8 @@
 #include "bvh.h"
 #include "camera.h"
 #include "diag.h"
+#include "load.h"
 #include "output.h"
-#include "parse.h"
 #include "png.h"
 #include "preview.h"
 #include "render.h"
@@ -310,7 +310,7 @@ int main(int argc, char **argv)
 	    !output_time_limit(opt.scene_path, opt.time_limit_micros, opt.time_limit))
 		return 1;
 	start = term_micros();
-	if (!parse_scene_file(&the_scene, opt.scene_path))
+	if (!load_scene_file(&the_scene, opt.scene_path))
 		return 1;
 #if RT_USE_BVH
 	bvh_build(&the_scene);

@@ -1,295 +1,29 @@
-/* parse.c - reads NFF (and rt's extensions) as a stream of tokens into a scene.
- * One lexer, one function per entity; every error names the file and line and says
+/* parse.c - the scene language: one function per NFF command (and rt's extensions),
+ * found through a table of command names, each reading its numbers through the lexer
+ * and handing them to the shape's set-up. Every error names the file and line and says
  * what was expected. The grammar is documented in docs/scene.md.
  * See LICENSE for copyright and licence. */
 #include "parse.h"
 
-#include <limits.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 
-#include "clearance.h"
-#include "diag.h"
-#include "image.h"
+#include "colour.h"
 #include "shape.h"
-
-/* ---- lexer --------------------------------------------------------------------- */
-
-#define NO_BYTE (-2) /* nothing pushed back */
-
-typedef struct {
-	read_fn read;
-	void *ctx;
-	const char *file;
-	int line;     /* line of the next byte */
-	int last_line; /* line of the last byte read: where the end of the file is reported */
-	int pending;  /* a byte read ahead, or NO_BYTE */
-	int after_cr; /* the last byte read was a CR: an LF now ends no further line */
-	int counted;  /* the last byte read ended a line (give_back takes that back) */
-	int cr_before; /* after_cr before the last byte (give_back restores it) */
-	int at_start; /* nothing read yet: a byte-order mark may follow */
-	char tok[RT_TOKEN_MAX + 1];
-	int tok_line;  /* line of the current token */
-	int pushed;    /* the current token was given back and comes again */
-	int have_tok;  /* tok holds a token (not end of input) */
-	int failed;    /* an error was reported */
-	int length_shift; /* lengths are read times 2^length_shift (fixed point's scale) */
-	real longest;     /* the largest length read, in magnitude (skipped objects too) */
-	int tiny_line;    /* line of the last number too small for the type (read as 0) */
-} lexer;
-
-static int next_byte(lexer *lx)
-{
-	int c;
-	if (lx->pending != NO_BYTE) {
-		c = lx->pending;
-		lx->pending = NO_BYTE;
-	} else {
-		c = lx->read(lx->ctx);
-	}
-	if (c >= 0)
-		lx->last_line = lx->line;
-	/* A line ends at LF, at CR LF and at a lone CR (old Mac files): a CR counts the line,
-	 * an LF right after it does not. Saturates: a hostile file of 2^31 newlines must not
-	 * overflow the counter. */
-	lx->counted = (c == '\r' || (c == '\n' && !lx->after_cr)) && lx->line < INT_MAX;
-	lx->line += lx->counted;
-	lx->cr_before = lx->after_cr;
-	lx->after_cr = c == '\r';
-	return c;
-}
-
-/* Gives back the byte just read, to be read again: it counts its line again then. */
-static void give_back(lexer *lx, int c)
-{
-	lx->line -= lx->counted;
-	lx->after_cr = lx->cr_before;
-	lx->pending = c;
-}
-
-/* Reports the first error only (later ones would be consequences) and returns 0. */
-static int fail(lexer *lx, int line, const char *fmt, ...) RT_PRINTF(3, 4);
-static int fail(lexer *lx, int line, const char *fmt, ...)
-{
-	if (!lx->failed) {
-		va_list ap;
-		va_start(ap, fmt);
-		diag_verror(lx->file, line, fmt, ap);
-		va_end(ap);
-	}
-	lx->failed = 1;
-	return 0;
-}
-
-static int is_space(int c)
-{
-	return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v';
-}
-
-/* A byte-order mark at the start: UTF-8's is skipped, UTF-16's is refused. */
-static int check_start(lexer *lx)
-{
-	int c = next_byte(lx);
-	lx->at_start = 0;
-	if (c == 0xFF || c == 0xFE) {
-		int d = next_byte(lx);
-		if ((c == 0xFF && d == 0xFE) || (c == 0xFE && d == 0xFF))
-			return fail(lx, 1, "the file is UTF-16 text; save it as ASCII or UTF-8");
-		/* Only one byte can be given back, and c is no text byte anyway: report it
-		 * here (a newline in d would otherwise move the error to line 2). */
-		return fail(lx, 1, "unexpected byte 0x%02X (this is not a text scene file)",
-			    (unsigned)c);
-	}
-	if (c == 0xEF) {
-		/* Read one at a time: the second byte is read only if the first matched. */
-		int b = next_byte(lx);
-		if (b == 0xBB && next_byte(lx) == 0xBF)
-			return 1;
-		return fail(lx, 1, "unexpected bytes at the start of the file");
-	}
-	/* Give the byte back (its line end counts again when reread, else a file starting
-	 * with a blank line reports every line one too far). */
-	give_back(lx, c);
-	return 1;
-}
-
-/* Reads the next token into lx->tok. Returns 1 for a token, 0 at the end of input or
- * after an error (lx->failed tells which). */
-static int next_token(lexer *lx)
-{
-	int c, n = 0;
-	if (lx->pushed) {
-		lx->pushed = 0;
-		return lx->have_tok;
-	}
-	if (lx->at_start && !check_start(lx))
-		return lx->have_tok = 0;
-	for (;;) {
-		c = next_byte(lx);
-		if (c == '#') {
-			/* A comment runs to the end of the line, whatever bytes it holds. */
-			while (c != '\n' && c != '\r' && c >= 0)
-				c = next_byte(lx);
-		}
-		if (c < 0) {
-			/* The end of the file is on its last line (an editor's last line), not
-			 * on the empty line after a final newline. */
-			lx->tok[0] = '\0';
-			lx->tok_line = lx->last_line;
-			return lx->have_tok = 0;
-		}
-		if (!is_space(c))
-			break;
-	}
-	lx->tok_line = lx->line;
-	while (c >= 0 && !is_space(c) && c != '#') {
-		if (c < 0x21 || c > 0x7E) {
-			fail(lx, lx->line, "unexpected byte 0x%02X (this is not a text scene file)",
-			     (unsigned)c);
-			return lx->have_tok = 0;
-		}
-		if (n == RT_TOKEN_MAX) {
-			lx->tok[n] = '\0';
-			fail(lx, lx->tok_line, "token too long (over %d bytes): '%.16s...'",
-			     RT_TOKEN_MAX, lx->tok);
-			return lx->have_tok = 0;
-		}
-		lx->tok[n++] = (char)c;
-		c = next_byte(lx);
-	}
-	lx->tok[n] = '\0';
-	/* Give the delimiter back; its line end is counted again when reread. */
-	if (c >= 0)
-		give_back(lx, c);
-	return lx->have_tok = 1;
-}
-
-static void push_back(lexer *lx) { lx->pushed = 1; }
-
-/* ---- numbers ------------------------------------------------------------------- */
-
-/* Is the whole token a number (finite or not)? */
-static int is_number(const char *tok)
-{
-	real unused;
-	return real_from_text(tok, 0, &unused) != REAL_TEXT_NOT_A_NUMBER;
-}
-
-/* Moves to the next token, which must be the value `what`; at the end of the file says
- * what was expected. A number is named "a number (what)" in messages, a whole count
- * by `what` alone. */
-static int next_value(lexer *lx, const char *what, int whole)
-{
-	if (next_token(lx))
-		return 1;
-	if (lx->failed)
-		return 0;
-	return fail(lx, lx->tok_line, "unexpected end of file (expected %s%s%s)",
-		    whole ? "" : "a number (", what, whole ? "" : ")");
-}
-
-/* Reads one finite number; a length (or a position) is read times the scene's length
- * scale, 2^length_shift, and counts towards the longest one. */
-static int read_value(lexer *lx, const char *what, int length, real *out)
-{
-	/* One format for the three ways a token can fail: the end of the message for each
-	 * status from REAL_TEXT_NOT_A_NUMBER on, and the range named only for a number out of
-	 * it. */
-	static const char *const why[] = {"", " (not a finite number)", " (out of range)"};
-	int shift = length ? lx->length_shift : 0, status, out_of_range;
-	*out = REAL_C(0.0); /* defined even on failure (static analysis cannot see through fail) */
-	if (!next_value(lx, what, 0))
-		return 0;
-	status = real_from_text(lx->tok, shift, out);
-	/* Underflow to zero is no error, but a zero it makes is named for what it is
-	 * (zero_word). */
-	if (status == REAL_TEXT_TINY) {
-		lx->tiny_line = lx->tok_line;
-		status = REAL_TEXT_OK;
-	}
-	if (status == REAL_TEXT_OK) {
-		if (length)
-			lx->longest = real_max(lx->longest, real_fabs(*out));
-		return 1;
-	}
-	/* Overflow, NaN and infinity are errors. */
-	out_of_range = status == REAL_TEXT_OUT_OF_RANGE;
-	return fail(lx, lx->tok_line, "expected a number (%s)%s%s, got '%s'%s", what,
-		    out_of_range ? " within " : "", out_of_range ? REAL_RANGE_TEXT : "", lx->tok,
-		    why[status - REAL_TEXT_NOT_A_NUMBER]);
-}
-
-/* Three numbers: a point (length = 1: lengths) or a direction or colour (length = 0). */
-static int read_triple(lexer *lx, const char *what, int length, vec3 *out)
-{
-	return read_value(lx, what, length, &out->x) && read_value(lx, what, length, &out->y) &&
-	       read_value(lx, what, length, &out->z);
-}
-
-/* Reads a number that must not be negative. Checked while lx->tok still holds it, so
- * the message shows the token at its own line (a look-ahead or the next number would
- * move the current token on). */
-static int read_nonnegative(lexer *lx, const char *what, real *out)
-{
-	if (!read_value(lx, what, 0, out))
-		return 0;
-	if (*out < REAL_C(0.0))
-		return fail(lx, lx->tok_line, "%s must not be negative, got %s", what, lx->tok);
-	return 1;
-}
 
 /* The Phong exponent: beyond what the build holds it only gets sharper, so it is held at
  * the largest value (SPD writes 100000, past Q16.16's 32767, for "no highlight"). */
 static int read_shine(lexer *lx, real *out)
 {
-	if (next_token(lx)) {
-		push_back(lx);
+	if (lexer_next(lx)) {
+		lexer_push_back(lx);
 		if (real_from_text(lx->tok, 0, out) == REAL_TEXT_OUT_OF_RANGE && lx->tok[0] != '-') {
-			(void)next_token(lx);
+			(void)lexer_next(lx);
 			*out = REAL_MAX;
 			return 1;
 		}
 	}
-	return read_nonnegative(lx, "material Shine", out);
-}
-
-const char *parse_digits(const char *text, long max, long *out)
-{
-	long v = 0;
-	for (; *text >= '0' && *text <= '9'; text++)
-		if (v <= max)
-			v = v * 10 + (*text - '0');
-	*out = v;
-	return text;
-}
-
-/* Reads a whole number in [lo, hi]; `limit` names the capacity macro behind hi, if any.
- * Read as strtol reads a token (which holds no spaces): a sign, then decimal digits. A
- * magnitude past hi is held above it (the messages show the token, not the value), so
- * a long run of digits is simply too large. */
-static int read_count(lexer *lx, const char *what, long lo, long hi, const char *limit,
-		      long *out)
-{
-	const char *digits, *end;
-	*out = 0; /* defined even on failure, as in read_value */
-	if (!next_value(lx, what, 1))
-		return 0;
-	digits = lx->tok + (lx->tok[0] == '-' || lx->tok[0] == '+');
-	end = parse_digits(digits, hi, out);
-	if (end == digits || *end != '\0')
-		return fail(lx, lx->tok_line, "expected %s (a whole number), got '%s'", what,
-			    lx->tok);
-	if (lx->tok[0] == '-')
-		*out = -*out;
-	if (limit && *out > hi)
-		return fail(lx, lx->tok_line,
-			    "%s %s is over the limit %s = %ld (raise it in src/config.h)", what,
-			    lx->tok, limit, hi);
-	if (*out < lo || *out > hi)
-		return fail(lx, lx->tok_line, "%s must be %ld to %ld, got %s", what, lo, hi,
-			    lx->tok);
-	return 1;
+	return lexer_read_nonnegative(lx, "material Shine", out);
 }
 
 /* ---- scene building ------------------------------------------------------------ */
@@ -308,7 +42,7 @@ typedef struct {
  * One copy for its five callers (REAL_APART): 48 bytes less M0 flash. */
 REAL_APART static int capacity_error(parser *p, int line, const char *what, const char *limit, long value)
 {
-	return fail(&p->lx, line,
+	return lexer_fail(&p->lx, line,
 		    "too many %s: the limit is %s = %ld (raise it in src/config.h)", what, limit,
 		    value);
 }
@@ -410,36 +144,36 @@ static int parse_view(parser *p)
 	for (k = 0; k < 6; k++) {
 		const char *key = names[k] + 5;
 		/* At the end of the file: "expected view from", as a number is named. */
-		if (!next_value(&p->lx, names[k], 1))
+		if (!lexer_next_value(&p->lx, names[k], 1))
 			return 0;
 		if (strcmp(p->lx.tok, key) != 0)
-			return fail(&p->lx, p->lx.tok_line, "view: expected '%s', got '%s'", key,
+			return lexer_fail(&p->lx, p->lx.tok_line, "view: expected '%s', got '%s'", key,
 				    p->lx.tok);
 		/* One call for the three points (from and at are lengths, up is a direction)
 		 * and one for the two numbers (hither is a length): 28 bytes less M0 flash
 		 * than a case each. */
 		if (k < 3) {
-			if (!read_triple(&p->lx, names[k], k < 2,
+			if (!lexer_read_triple(&p->lx, names[k], k < 2,
 					 k == 0 ? &v->from : k == 1 ? &v->at : &v->up))
 				return 0;
 		} else if (k < 5) {
-			if (!read_value(&p->lx, names[k], k == 4, k == 3 ? &v->angle : &v->hither))
+			if (!lexer_read_value(&p->lx, names[k], k == 4, k == 3 ? &v->angle : &v->hither))
 				return 0;
 			if (k == 3 && !(v->angle > REAL_C(0.0) && v->angle < REAL_C(180.0))) {
 				/* Say what the type made of it: 179.99999999 is 180 in float. */
 				char held[32];
 				real_format(v->angle, 0, held, sizeof held);
-				return fail(&p->lx, p->lx.tok_line,
+				return lexer_fail(&p->lx, p->lx.tok_line,
 					    "view angle must be between 0 and 180 degrees, got %s (%s "
 					    "in %s)",
 					    p->lx.tok, held, REAL_NAME);
 			}
 		} else {
-			if (!read_count(&p->lx, "resolution width", 1, RT_MAX_SCENE_WIDTH,
+			if (!lexer_read_count(&p->lx, "resolution width", 1, RT_MAX_SCENE_WIDTH,
 					"RT_MAX_SCENE_WIDTH", &size))
 				return 0;
 			v->width = (int)size;
-			if (!read_count(&p->lx, "resolution height", 1, RT_MAX_SCENE_HEIGHT,
+			if (!lexer_read_count(&p->lx, "resolution height", 1, RT_MAX_SCENE_HEIGHT,
 					"RT_MAX_SCENE_HEIGHT", &size))
 				return 0;
 			v->height = (int)size;
@@ -450,10 +184,10 @@ static int parse_view(parser *p)
 		vec3 dir = vec_sub(v->at, v->from);
 		dir3 side = dir_cross(dir_normalize(dir), dir_normalize(v->up));
 		if (!(vec_dot2(dir, dir) > 0))
-			return fail(&p->lx, p->view_line, "view: the distance from 'from' to 'at' is %s",
+			return lexer_fail(&p->lx, p->view_line, "view: the distance from 'from' to 'at' is %s",
 				    zero_word(p, p->view_line, not_all_zero(dir)));
 		if (!(unit_sqrt(dir_dot(side, side)) > UNIT_C(1e-9)))
-			return fail(&p->lx, p->view_line,
+			return lexer_fail(&p->lx, p->view_line,
 				    "view: 'up' is zero or parallel to the view direction");
 	}
 	return 1;
@@ -463,12 +197,12 @@ static int parse_view(parser *p)
  * returns -1. NFF's optional light colour is told apart this way. */
 static int number_follows_on(parser *p, int line)
 {
-	if (!next_token(&p->lx))
-		return p->lx.failed ? -1 : (push_back(&p->lx), 0);
-	push_back(&p->lx);
+	if (!lexer_next(&p->lx))
+		return p->lx.failed ? -1 : (lexer_push_back(&p->lx), 0);
+	lexer_push_back(&p->lx);
 	if (p->lx.tok_line != line)
 		return 0;
-	return is_number(p->lx.tok);
+	return lexer_is_number(p->lx.tok);
 }
 
 static int parse_light(parser *p)
@@ -479,14 +213,14 @@ static int parse_light(parser *p)
 	if (s->light_count == RT_MAX_LIGHTS)
 		return capacity_error(p, line, "lights", "RT_MAX_LIGHTS", RT_MAX_LIGHTS);
 	l = &s->lights[s->light_count];
-	if (!read_triple(&p->lx, "light position", 1, &l->position))
+	if (!lexer_read_triple(&p->lx, "light position", 1, &l->position))
 		return 0;
 	/* The colour is optional: present when a number follows on the same line. */
 	p->light_has_color[s->light_count] = number_follows_on(p, line);
 	if (p->light_has_color[s->light_count] < 0)
 		return 0;
 	if (p->light_has_color[s->light_count] &&
-	    !read_triple(&p->lx, "light colour", 0, &l->color))
+	    !lexer_read_triple(&p->lx, "light colour", 0, &l->color))
 		return 0;
 	if (!p->light_has_color[s->light_count])
 		p->unlit_lights++;
@@ -501,23 +235,23 @@ static int parse_material(parser *p)
 	material m;
 	memset(&m, 0, sizeof m);
 	/* Each value is checked as it is read, so a negative one is named at its token. */
-	if (!read_nonnegative(lx, "material colour", &m.color.x) ||
-	    !read_nonnegative(lx, "material colour", &m.color.y) ||
-	    !read_nonnegative(lx, "material colour", &m.color.z) ||
-	    !read_nonnegative(lx, "material Kd", &m.kd) ||
-	    !read_nonnegative(lx, "material Ks", &m.ks) ||
+	if (!lexer_read_nonnegative(lx, "material colour", &m.color.x) ||
+	    !lexer_read_nonnegative(lx, "material colour", &m.color.y) ||
+	    !lexer_read_nonnegative(lx, "material colour", &m.color.z) ||
+	    !lexer_read_nonnegative(lx, "material Kd", &m.kd) ||
+	    !lexer_read_nonnegative(lx, "material Ks", &m.ks) ||
 	    !read_shine(lx, &m.shine) ||
-	    !read_nonnegative(lx, "material T", &m.kt) ||
-	    !read_value(lx, "material index of refraction", 0, &m.ior))
+	    !lexer_read_nonnegative(lx, "material T", &m.kt) ||
+	    !lexer_read_value(lx, "material index of refraction", 0, &m.ior))
 		return 0;
 	if (m.kt > REAL_C(0.0) && !(m.ior > REAL_C(0.0)))
-		return fail(&p->lx, p->lx.tok_line,
+		return lexer_fail(&p->lx, p->lx.tok_line,
 			    "material: T > 0 needs an index of refraction > 0, got %s",
 			    p->lx.tok);
 	/* ior means nothing for opaque materials (SPD writes 0 or 1): store 1 so they share. */
 	if (m.kt <= REAL_C(0.0))
 		m.ior = REAL_C(1.0);
-	m.color = image_srgb_to_linear(m.color);
+	m.color = colour_srgb_to_linear(m.color);
 	m.absorb = p->absorb;
 	p->absorb = vec_make(REAL_C(0.0), REAL_C(0.0), REAL_C(0.0));
 	index = intern_material(p, &m, line);
@@ -533,8 +267,8 @@ static int parse_sphere(parser *p)
 	vec3 center;
 	real radius;
 	object *o;
-	if (!read_triple(&p->lx, "sphere centre", 1, &center) ||
-	    !read_value(&p->lx, "sphere radius", 1, &radius))
+	if (!lexer_read_triple(&p->lx, "sphere centre", 1, &center) ||
+	    !lexer_read_value(&p->lx, "sphere radius", 1, &radius))
 		return 0;
 	if (radius == REAL_C(0.0)) {
 		warn(p, line, "sphere with radius 0");
@@ -622,21 +356,21 @@ REAL_APART static int parse_polygon(parser *p, int patch)
 	polygon_shape *poly;
 	object *o;
 
-	if (!read_count(&p->lx, patch ? "patch vertex count" : "polygon vertex count", 3,
+	if (!lexer_read_count(&p->lx, patch ? "patch vertex count" : "polygon vertex count", 3,
 			RT_MAX_POLY_VERTS, "RT_MAX_POLY_VERTS", &count))
 		return 0;
 	if (count > RT_MAX_VERTICES - s->vertex_count)
 		return capacity_error(p, line, "polygon vertices in the scene", "RT_MAX_VERTICES",
 				      RT_MAX_VERTICES);
 	for (i = 0; i < count; i++) {
-		if (!read_triple(&p->lx, patch ? "patch vertex" : "polygon vertex", 1,
+		if (!lexer_read_triple(&p->lx, patch ? "patch vertex" : "polygon vertex", 1,
 			      &s->vertices[first + i]))
 			return 0;
 #if RT_SHAPE_PATCH
 		if (patch) {
 			/* Normalised as read; a zero one stays zero until the face's is known. */
 			vec3 n;
-			if (!read_triple(&p->lx, "patch vertex normal", 0, &n))
+			if (!lexer_read_triple(&p->lx, "patch vertex normal", 0, &n))
 				return 0;
 			s->normals[first + i] = dir_normalize(n);
 		}
@@ -683,10 +417,10 @@ static int parse_cone(parser *p)
 	real base_radius, apex_radius, length;
 	unsigned char inside_only = 0;
 	object *o;
-	if (!read_triple(&p->lx, "cone base centre", 1, &base) ||
-	    !read_value(&p->lx, "cone base radius", 1, &base_radius) ||
-	    !read_triple(&p->lx, "cone apex centre", 1, &apex) ||
-	    !read_value(&p->lx, "cone apex radius", 1, &apex_radius))
+	if (!lexer_read_triple(&p->lx, "cone base centre", 1, &base) ||
+	    !lexer_read_value(&p->lx, "cone base radius", 1, &base_radius) ||
+	    !lexer_read_triple(&p->lx, "cone apex centre", 1, &apex) ||
+	    !lexer_read_value(&p->lx, "cone apex radius", 1, &apex_radius))
 		return 0;
 	/* NFF: both radii negative shows only the inside. */
 	if (base_radius < REAL_C(0.0) && apex_radius <= REAL_C(0.0)) {
@@ -696,7 +430,7 @@ static int parse_cone(parser *p)
 	} else if (base_radius < REAL_C(0.0) || apex_radius < REAL_C(0.0)) {
 		/* The apex radius, read last, is still the current token: show it as written
 		 * (whatever the number type). */
-		return fail(&p->lx, line,
+		return lexer_fail(&p->lx, line,
 			    "cone: both radii must have the same sign, got base radius %s 0 and "
 			    "apex radius %s",
 			    base_radius < REAL_C(0.0) ? "<" : ">=", p->lx.tok);
@@ -733,7 +467,7 @@ static int add_halfspace(parser *p, vec3 n, real d, int line)
 	real2 length2 = vec_dot2(n, n);
 	real_reciprocal per_length;
 	if (!(length2 > 0))
-		return fail(&p->lx, p->lx.tok_line, "polyhedron: a plane normal is %s",
+		return lexer_fail(&p->lx, p->lx.tok_line, "polyhedron: a plane normal is %s",
 			    zero_word(p, p->lx.tok_line, not_all_zero(n)));
 	if (s->plane_count == RT_MAX_PLANES)
 		return capacity_error(p, line, "polyhedron planes in the scene", "RT_MAX_PLANES",
@@ -752,14 +486,14 @@ static int parse_hedron(parser *p)
 	int line = p->lx.tok_line, first = p->s->plane_count, i;
 	long count;
 	object *o;
-	if (!read_count(&p->lx, "polyhedron plane count", 1, RT_MAX_HEDRON_PLANES,
+	if (!lexer_read_count(&p->lx, "polyhedron plane count", 1, RT_MAX_HEDRON_PLANES,
 			"RT_MAX_HEDRON_PLANES", &count))
 		return 0;
 	for (i = 0; i < count; i++) {
 		vec3 n;
 		real d;
-		if (!read_triple(&p->lx, "polyhedron plane normal", 0, &n) ||
-		    !read_value(&p->lx, "polyhedron plane offset", 1, &d) ||
+		if (!lexer_read_triple(&p->lx, "polyhedron plane normal", 0, &n) ||
+		    !lexer_read_value(&p->lx, "polyhedron plane offset", 1, &d) ||
 		    !add_halfspace(p, n, d, line))
 			return 0;
 	}
@@ -777,8 +511,8 @@ static int parse_box(parser *p)
 	int line = p->lx.tok_line, first = p->s->plane_count, face;
 	vec3 a, b;
 	object *o;
-	if (!read_triple(&p->lx, "box corner", 1, &a) ||
-	    !read_triple(&p->lx, "box corner", 1, &b))
+	if (!lexer_read_triple(&p->lx, "box corner", 1, &a) ||
+	    !lexer_read_triple(&p->lx, "box corner", 1, &b))
 		return 0;
 	if (a.x == b.x || a.y == b.y || a.z == b.z) {
 		warn(p, line, "box with zero thickness");
@@ -809,11 +543,11 @@ static int parse_plane(parser *p)
 	int line = p->lx.tok_line;
 	vec3 point, normal;
 	object *o;
-	if (!read_triple(&p->lx, "plane point", 1, &point) ||
-	    !read_triple(&p->lx, "plane normal", 0, &normal))
+	if (!lexer_read_triple(&p->lx, "plane point", 1, &point) ||
+	    !lexer_read_triple(&p->lx, "plane normal", 0, &normal))
 		return 0;
 	if (!(vec_dot2(normal, normal) > 0))
-		return fail(&p->lx, line, "plane: the normal is %s",
+		return lexer_fail(&p->lx, line, "plane: the normal is %s",
 			    zero_word(p, line, not_all_zero(normal)));
 	o = new_object(p, SHAPE_PLANE, line);
 	if (!o)
@@ -827,7 +561,7 @@ static int parse_plane(parser *p)
  * current token on (to the next line, or to end of file). */
 static int read_absorption(parser *p, real *out)
 {
-	if (!read_nonnegative(&p->lx, "absorption coefficient", out))
+	if (!lexer_read_nonnegative(&p->lx, "absorption coefficient", out))
 		return 0;
 	/* Per unit length: a scene scaled up by 2^shift absorbs 2^shift times less per unit. */
 	*out = real_ldexp(*out, -p->lx.length_shift);
@@ -852,10 +586,10 @@ static int parse_absorb(parser *p)
 static int parse_cutoff(parser *p)
 {
 	scene *s = p->s;
-	if (!read_value(&p->lx, "cutoff weight", 0, &s->cutoff))
+	if (!lexer_read_value(&p->lx, "cutoff weight", 0, &s->cutoff))
 		return 0;
 	if (!(s->cutoff >= REAL_C(0.0) && s->cutoff < REAL_C(1.0)))
-		return fail(&p->lx, p->lx.tok_line, "cutoff weight must be in [0, 1), got %s",
+		return lexer_fail(&p->lx, p->lx.tok_line, "cutoff weight must be in [0, 1), got %s",
 			    p->lx.tok);
 	return 1;
 }
@@ -875,7 +609,8 @@ static void finish_lights(parser *p)
 			s->lights[i].color = vec_make(each, each, each);
 }
 
-/* The commands, in the order of enum command (for parse_keyword). */
+
+/* The commands, in the order of enum command (for lexer_keyword). */
 static const char command_names[] =
 	"v\0b\0l\0f\0s\0p\0pp\0c\0polyhedron\0box\0plane\0ambient\0absorb\0depth\0cutoff\0";
 enum command {
@@ -884,27 +619,18 @@ enum command {
 	CMD_UNKNOWN
 };
 
-int parse_keyword(const char *names, const char *word)
-{
-	int i = 0;
-	while (*names && strcmp(names, word) != 0) {
-		names += strlen(names) + 1;
-		i++;
-	}
-	return i;
-}
 
 static int parse_entity(parser *p)
 {
 	const char *cmd = p->lx.tok;
 	long depth;
-	switch ((enum command)parse_keyword(command_names, cmd)) {
+	switch ((enum command)lexer_keyword(command_names, cmd)) {
 	case CMD_VIEW:
 		return parse_view(p);
 	case CMD_BACKGROUND:
-		if (!read_triple(&p->lx, "background colour", 0, &p->s->background))
+		if (!lexer_read_triple(&p->lx, "background colour", 0, &p->s->background))
 			return 0;
-		p->s->background = image_srgb_to_linear(p->s->background);
+		p->s->background = colour_srgb_to_linear(p->s->background);
 		return 1;
 	case CMD_LIGHT:
 		return parse_light(p);
@@ -918,14 +644,14 @@ static int parse_entity(parser *p)
 #if RT_SHAPE_PATCH
 		return parse_polygon(p, 1);
 #else
-		return fail(&p->lx, p->lx.tok_line,
+		return lexer_fail(&p->lx, p->lx.tok_line,
 			    "patches are left out of this build (RT_SHAPE_PATCH)");
 #endif
 	case CMD_CONE:
 #if RT_SHAPE_CONE
 		return parse_cone(p);
 #else
-		return fail(&p->lx, p->lx.tok_line, "cones are left out of this build (RT_SHAPE_CONE)");
+		return lexer_fail(&p->lx, p->lx.tok_line, "cones are left out of this build (RT_SHAPE_CONE)");
 #endif
 	case CMD_HEDRON:
 		return parse_hedron(p);
@@ -934,11 +660,11 @@ static int parse_entity(parser *p)
 	case CMD_PLANE:
 		return parse_plane(p);
 	case CMD_AMBIENT:
-		return read_triple(&p->lx, "ambient colour", 0, &p->s->ambient);
+		return lexer_read_triple(&p->lx, "ambient colour", 0, &p->s->ambient);
 	case CMD_ABSORB:
 		return parse_absorb(p);
 	case CMD_DEPTH:
-		if (!read_count(&p->lx, "depth", 1, RT_MAX_DEPTH, "RT_MAX_DEPTH", &depth))
+		if (!lexer_read_count(&p->lx, "depth", 1, RT_MAX_DEPTH, "RT_MAX_DEPTH", &depth))
 			return 0;
 		p->s->depth = (int)depth;
 		return 1;
@@ -948,18 +674,17 @@ static int parse_entity(parser *p)
 		break;
 	}
 	/* In a token stream an extra number is read as a command: say so. */
-	if (is_number(cmd))
-		return fail(&p->lx, p->lx.tok_line,
+	if (lexer_is_number(cmd))
+		return lexer_fail(&p->lx, p->lx.tok_line,
 			    "unknown command '%s' (a number: one too many before it?)",
 			    cmd);
-	return fail(&p->lx, p->lx.tok_line, "unknown command '%s'", cmd);
+	return lexer_fail(&p->lx, p->lx.tok_line, "unknown command '%s'", cmd);
 }
 
 /* Large: static, so the MCU's small stack never holds it. */
 static parser the_parser;
 
-/* One pass over the input, reading lengths times 2^length_shift. */
-static int parse_pass(scene *s, const char *file, read_fn read, void *ctx, int length_shift)
+int parse_scene_at(scene *s, const char *file, read_fn read, void *ctx, int length_shift)
 {
 	parser *p = &the_parser;
 	int ok;
@@ -967,20 +692,12 @@ static int parse_pass(scene *s, const char *file, read_fn read, void *ctx, int l
 	scene_init(s, file);
 	p->s = s;
 	p->material = -1;
-	p->lx.read = read;
-	p->lx.ctx = ctx;
-	p->lx.file = file;
-	p->lx.line = 1;
-	p->lx.last_line = 1;
-	p->lx.pending = NO_BYTE;
-	p->lx.after_cr = p->lx.counted = p->lx.cr_before = 0;
-	p->lx.at_start = 1;
-	p->lx.length_shift = length_shift;
+	lexer_init(&p->lx, file, read, ctx, length_shift);
 	ok = 1;
-	while (ok && next_token(&p->lx))
+	while (ok && lexer_next(&p->lx))
 		ok = parse_entity(p);
 	if (ok && !p->lx.failed && !p->view_line)
-		fail(&p->lx, p->lx.last_line, "no view: a scene needs a 'v' entity");
+		lexer_fail(&p->lx, p->lx.last_line, "no view: a scene needs a 'v' entity");
 	ok = ok && !p->lx.failed;
 	if (ok) {
 		finish_lights(p);
@@ -994,126 +711,5 @@ static int parse_pass(scene *s, const char *file, read_fn read, void *ctx, int l
 
 int parse_scene(scene *s, const char *file, read_fn read, void *ctx)
 {
-	return parse_pass(s, file, read, ctx, 0);
-}
-
-/* One whole pass over the source, from its start, at length scale 2^shift. */
-static int source_pass(scene *s, const char *name, const scene_source *source, int shift,
-		       int again)
-{
-	int ok;
-	if (!source->open(source->ctx, again))
-		return 0;
-	ok = parse_pass(s, name, source->read, source->ctx, shift);
-	/* The source reports its own read error; it counts only if parsing went well. */
-	if (!source->close(source->ctx, ok))
-		ok = 0;
-	return ok;
-}
-
-/* Each light's clearance, for its shadow segments (trace.c); and the check that the eye
- * and the lights stand off every surface by more than the type can lose (REAL_CLEARANCE_MIN:
- * an eye that Q16.16 rounds onto a floor loses the floor). */
-static int place_eye_and_lights(scene *s, const char *name)
-{
-	int i;
-	for (i = -1; i < s->light_count; i++) {
-		int nearest;
-		real clearance = scene_clearance(s, i < 0 ? &s->camera.from : &s->lights[i].position,
-						 &nearest);
-		if (i >= 0)
-			s->lights[i].clearance = clearance;
-		if (clearance < REAL_CLEARANCE_MIN) {
-			diag_error(name, 0,
-				   "cannot be rendered in %s: the %s is within 2^%d units of the surface "
-				   "on line %d",
-				   REAL_NAME, i < 0 ? "eye" : "light",
-				   REAL_CLEARANCE_BITS - 16 - s->length_shift, s->objects[nearest].line);
-			return 0;
-		}
-	}
-	return 1;
-}
-
-/* Loads a scene from a re-readable source: once in floating point; in fixed point first
- * to measure it, then at the scale that fits it, then checks it can be held. */
-int parse_scene_source(scene *s, const char *name, const scene_source *source)
-{
-	/* Floating point reads the file once. Fixed point reads it first to measure it (at
-	 * scale 1, which keeps small scenes' detail, or if a length does not fit there at
-	 * the coarse REAL_FIRST_PASS_SHIFT that holds any coordinate), then again at the
-	 * scale that fits its extent into Q16.16's range (real_length_shift). */
-	int final_shift;
-	real extent, feature;
-	const char *why;
-	/* Test the macro, not a variable holding it: the condition is fixed per build, which
-	 * static analysis reports about a variable ("always false"). */
-	if (REAL_FIRST_PASS_SHIFT != 0) {
-		int shift = 0, ok, was_muted = diag_mute(1);
-		ok = source_pass(s, name, source, shift, 1);
-		if (!ok) {
-			shift = REAL_FIRST_PASS_SHIFT;
-			ok = source_pass(s, name, source, shift, 1);
-		}
-		diag_mute(was_muted);
-		if (!ok) /* again, to report the error */
-			return source_pass(s, name, source, shift, 0);
-		/* Every length read counts, also those of objects skipped at this scale. */
-		final_shift = real_length_shift(s->longest_length, shift);
-	} else {
-		final_shift = 0;
-	}
-	if (!source_pass(s, name, source, final_shift, 0))
-		return 0;
-	s->length_shift = final_shift;
-	scene_measure(s, &extent, &feature);
-	if (!real_can_represent(extent, feature, &why)) {
-		char e[32], f[32];
-		real_format(extent, final_shift, e, sizeof e);
-		real_format(feature, final_shift, f, sizeof f);
-		diag_error(name, 0, "cannot be rendered in %s: extent %s, smallest feature %s: %s",
-			   REAL_NAME, e, f, why);
-		return 0;
-	}
-	return place_eye_and_lights(s, name);
-}
-
-/* A byte buffer read from its start on every pass. */
-typedef struct {
-	const unsigned char *data;
-	size_t size, at;
-} buffer_reader;
-
-static int read_buffer(void *ctx)
-{
-	buffer_reader *b = ctx;
-	return b->at < b->size ? b->data[b->at++] : -1;
-}
-
-static int buffer_open(void *ctx, int again)
-{
-	(void)again;
-	((buffer_reader *)ctx)->at = 0;
-	return 1;
-}
-
-static int buffer_close(void *ctx, int ok)
-{
-	(void)ctx;
-	(void)ok;
-	return 1;
-}
-
-int parse_scene_buffer(scene *s, const char *name, const void *data, size_t size)
-{
-	buffer_reader b;
-	scene_source source;
-	b.data = data;
-	b.size = size;
-	b.at = 0;
-	source.open = buffer_open;
-	source.read = read_buffer;
-	source.close = buffer_close;
-	source.ctx = &b;
-	return parse_scene_source(s, name, &source);
+	return parse_scene_at(s, file, read, ctx, 0);
 }

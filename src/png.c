@@ -5,6 +5,8 @@
  * See LICENSE for copyright and licence. */
 #include "png.h"
 
+#include "colour.h"
+
 /* stb_image_write has floating-point code (HDR, JPEG): the fixed-point build, which has
  * none at all, goes without PNG (png_available says so). */
 #if !REAL_FIXED
@@ -178,7 +180,7 @@ static int png_row(sink *self, const vec3 *colors, const int *ids)
 {
 	png_sink *p = (png_sink *)self;
 	(void)ids;
-	image_encode_row(colors, p->width, p->rgb + (size_t)p->rows * (size_t)p->width * 3);
+	colour_encode_row(colors, p->width, p->rgb + (size_t)p->rows * (size_t)p->width * 3);
 	p->rows++;
 	return 1;
 }

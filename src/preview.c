@@ -7,8 +7,8 @@
 
 #include <stdio.h>
 
+#include "colour.h"
 #include "fixed.h"
-#include "image.h"
 
 const char preview_ramp[] = " .:-=+*#%@";
 #define RAMP_LENGTH (int)(sizeof preview_ramp - 1)
@@ -145,11 +145,11 @@ static int preview_row(sink *self, const vec3 *colors, const int *ids)
 	preview_sink *p = (preview_sink *)self;
 	(void)ids;
 	if (!p->have_upper) {
-		image_encode_row(colors, p->width, p->upper);
+		colour_encode_row(colors, p->width, p->upper);
 		p->have_upper = 1;
 		return 1;
 	}
-	image_encode_row(colors, p->width, lower);
+	colour_encode_row(colors, p->width, lower);
 	p->have_upper = 0;
 	return emit_line(p, p->upper, lower);
 }

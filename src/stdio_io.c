@@ -9,7 +9,7 @@
 #include <sys/stat.h>
 
 #include "diag.h"
-#include "parse.h"
+#include "load.h"
 
 void diag_standard_error(void *ctx, const char *message)
 {
@@ -129,7 +129,7 @@ static int file_close(void *ctx, int ok)
 	return checked;
 }
 
-int parse_scene_file(scene *s, const char *path)
+int load_scene_file(scene *s, const char *path)
 {
 	file_reader f;
 	scene_source source;
@@ -140,7 +140,7 @@ int parse_scene_file(scene *s, const char *path)
 	source.read = file_read;
 	source.close = file_close;
 	source.ctx = &f;
-	ok = parse_scene_source(s, path, &source);
+	ok = load_scene_source(s, path, &source);
 	/* An input read through a copy stays open until the last pass is done. */
 	if (f.copy)
 		fclose(f.copy);

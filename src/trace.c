@@ -213,7 +213,7 @@ static vec3 shade_lights(tracer *t, const ray *r, departure *from, const materia
 		}
 		/* The shadow ray leaves from the offset point along the direction from the hit
 		 * point: its segment ends at the light plus the offset. Where no surface is
-		 * that near the light (its clearance, parse.c), nothing between the two ends
+		 * that near the light (its clearance, load.c), nothing between the two ends
 		 * can tell them apart, and that costs nothing. Nearer, it could end behind the
 		 * surface and be falsely shadowed by it: the segment then runs from the offset
 		 * point towards the light itself, and stops the offset short of it, as it

@@ -1,5 +1,6 @@
 /* support.c - helpers shared by the unit-test suites.
  * See LICENSE for copyright and licence. */
+#include "load.h"
 #include "support.h"
 
 #include <math.h>
@@ -51,14 +52,14 @@ int test_parse_buffer(scene *s, const char *name, const char *text, diag_sink_fn
 {
 	int ok;
 	diag_set_sink(sink ? sink : drop, ctx);
-	ok = parse_scene_buffer(s, name, text, strlen(text));
+	ok = load_scene_buffer(s, name, text, strlen(text));
 	diag_set_sink(NULL, NULL);
 	return ok;
 }
 
 int test_shift(double extent)
 {
-	/* As parse_scene_source measures: at scale 1 when the extent fits there, else at
+	/* As load_scene_source measures: at scale 1 when the extent fits there, else at
 	 * REAL_FIRST_PASS_SHIFT. */
 	if (extent < 32767.0)
 		return real_length_shift(test_real(extent), 0);

@@ -14,7 +14,7 @@ ray test_ray(vec3 origin, vec3 dir);
 int test_parse_text(scene *s, const char *name, const char *text, diag_sink_fn sink,
 		    void *ctx);
 
-/* Parses a scene held in a string as a scene file is loaded (parse_scene_buffer: in fixed
+/* Parses a scene held in a string as a scene file is loaded (load_scene_buffer: in fixed
  * point measured, scaled, and refused when out of range). */
 int test_parse_buffer(scene *s, const char *name, const char *text, diag_sink_fn sink,
 		      void *ctx);

@@ -3,6 +3,7 @@
  * See LICENSE for copyright and licence. */
 #include <string.h>
 
+#include "colour.h"
 #include "image.h"
 #include "test.h"
 
@@ -14,25 +15,25 @@ static double srgb_encode(double linear)
 
 static void test_byte_ends(void)
 {
-	CHECK_INT(image_srgb_byte(REAL_C(0.0)), 0);
-	CHECK_INT(image_srgb_byte(REAL_C(1.0)), 255);
-	CHECK_INT(image_srgb_byte(-REAL_C(0.0)), 0);
+	CHECK_INT(colour_srgb_byte(REAL_C(0.0)), 0);
+	CHECK_INT(colour_srgb_byte(REAL_C(1.0)), 255);
+	CHECK_INT(colour_srgb_byte(-REAL_C(0.0)), 0);
 	/* Out of range clamps; NaN must not become a bright pixel (Q16.16 has none). */
 #if !REAL_FIXED
-	CHECK_INT(image_srgb_byte((real)NAN), 0);
-	CHECK_INT(image_srgb_byte(-(real)NAN), 0);
+	CHECK_INT(colour_srgb_byte((real)NAN), 0);
+	CHECK_INT(colour_srgb_byte(-(real)NAN), 0);
 #endif
-	CHECK_INT(image_srgb_byte(REAL_C(-0.5)), 0);
-	CHECK_INT(image_srgb_byte(-REAL_MAX), 0);
-	CHECK_INT(image_srgb_byte(REAL_C(1.5)), 255);
-	CHECK_INT(image_srgb_byte(REAL_MAX), 255);
+	CHECK_INT(colour_srgb_byte(REAL_C(-0.5)), 0);
+	CHECK_INT(colour_srgb_byte(-REAL_MAX), 0);
+	CHECK_INT(colour_srgb_byte(REAL_C(1.5)), 255);
+	CHECK_INT(colour_srgb_byte(REAL_MAX), 255);
 #if !REAL_FIXED
-	CHECK_INT(image_srgb_byte((real)INFINITY), 255);
-	CHECK_INT(image_srgb_byte(-(real)INFINITY), 0);
+	CHECK_INT(colour_srgb_byte((real)INFINITY), 255);
+	CHECK_INT(colour_srgb_byte(-(real)INFINITY), 0);
 #endif
 	/* Below half a code: still black. */
-	CHECK_INT(image_srgb_byte(REAL_C(1e-30)), 0);
-	CHECK_INT(image_srgb_byte(REAL_C(0.0001)), 0);
+	CHECK_INT(colour_srgb_byte(REAL_C(1e-30)), 0);
+	CHECK_INT(colour_srgb_byte(REAL_C(0.0001)), 0);
 }
 
 static void test_byte_formula(void)
@@ -50,12 +51,12 @@ static void test_byte_formula(void)
 	size_t i;
 	int bad = 0, checked = 0, n;
 	for (i = 0; i < sizeof table / sizeof table[0]; i++) {
-		CHECK_INT(image_srgb_byte(test_real(table[i].linear)), table[i].code);
+		CHECK_INT(colour_srgb_byte(test_real(table[i].linear)), table[i].code);
 		/* The table itself agrees with the reference. */
 		CHECK_INT((int)floor(255 * srgb_encode(table[i].linear) + 0.5), table[i].code);
 	}
 	/* 0.214 is about 50% grey: 127.49 codes. */
-	CHECK(image_srgb_byte(REAL_C(0.214)) >= 127 && image_srgb_byte(REAL_C(0.214)) <= 128);
+	CHECK(colour_srgb_byte(REAL_C(0.214)) >= 127 && colour_srgb_byte(REAL_C(0.214)) <= 128);
 
 	/* A dense sweep (quadratic, so the steep dark end is sampled finely): every point
 	 * not within 1e-4 code of a boundary rounds exactly as the formula does. Q16.16:
@@ -68,9 +69,9 @@ static void test_byte_formula(void)
 		if (fabs(v - floor(v) - 0.5) < TOL3(1e-4, 1e-4, 0.06))
 			continue;
 		checked++;
-		if (image_srgb_byte(test_real(x)) != (int)floor(v + 0.5) && bad++ == 0)
-			printf("%s:%d: image_srgb_byte(%.17g) = %d, the formula gives %d\n",
-			       __FILE__, __LINE__, x, image_srgb_byte(test_real(x)),
+		if (colour_srgb_byte(test_real(x)) != (int)floor(v + 0.5) && bad++ == 0)
+			printf("%s:%d: colour_srgb_byte(%.17g) = %d, the formula gives %d\n",
+			       __FILE__, __LINE__, x, colour_srgb_byte(test_real(x)),
 			       (int)floor(v + 0.5));
 	}
 	CHECK_INT(bad, 0);
@@ -85,9 +86,9 @@ static void test_byte_monotonic(void)
 	/* Non-decreasing from below 0 to above 1, and every code is reached. */
 	for (n = -100; n <= 110000; n++) {
 		double x = (double)n / 100000;
-		int code = image_srgb_byte(test_real(x * fabs(x)));
+		int code = colour_srgb_byte(test_real(x * fabs(x)));
 		if (code < previous && decreases++ == 0)
-			printf("%s:%d: image_srgb_byte(%.17g) = %d, below %d for a smaller value\n",
+			printf("%s:%d: colour_srgb_byte(%.17g) = %d, below %d for a smaller value\n",
 			       __FILE__, __LINE__, x * fabs(x), code, previous);
 		previous = code;
 		if (!seen[code]++)
@@ -100,18 +101,18 @@ static void test_byte_monotonic(void)
 
 static void test_to_linear(void)
 {
-	vec3 c = image_srgb_to_linear(vec_make(REAL_C(0.0), REAL_C(0.5), REAL_C(1.0)));
+	vec3 c = colour_srgb_to_linear(vec_make(REAL_C(0.0), REAL_C(0.5), REAL_C(1.0)));
 	double eps = TOL3(1e-6, 1e-12, 1 * LSB); /* Q16.16: one rounding */
 	CHECK_REAL(c.x, 0, 0);
 	CHECK_REAL(c.y, 0.21404114048223255, eps);
 	CHECK_REAL(c.z, 1, 0);
 	/* The linear segment and the join of the two pieces. */
-	c = image_srgb_to_linear(vec_make(REAL_C(0.02), REAL_C(0.04045), REAL_C(0.8)));
+	c = colour_srgb_to_linear(vec_make(REAL_C(0.02), REAL_C(0.04045), REAL_C(0.8)));
 	CHECK_REAL(c.x, 0.02 / 12.92, eps);
 	CHECK_REAL(c.y, 0.0031308049535603713, eps);
 	CHECK_REAL(c.z, 0.6038273388553378, eps);
 	/* Negative clamps to black; brighter than white is kept as given, not clamped. */
-	c = image_srgb_to_linear(vec_make(REAL_C(-0.5), REAL_C(2.0), REAL_C(0.25)));
+	c = colour_srgb_to_linear(vec_make(REAL_C(-0.5), REAL_C(2.0), REAL_C(0.25)));
 	CHECK_REAL(c.x, 0, 0);
 	CHECK_REAL(c.y, 2, 0);
 	CHECK_REAL(c.z, 0.05087608817155679, eps);
@@ -124,12 +125,12 @@ static void test_round_trip(void)
 	int k;
 	for (k = 0; k < 256; k++) {
 		real v = real_div(real_from_int(k), REAL_C(255.0));
-		vec3 c = image_srgb_to_linear(vec_make(v, v, v));
-		if (!CHECK_INT(image_srgb_byte(c.x), k))
+		vec3 c = colour_srgb_to_linear(vec_make(v, v, v));
+		if (!CHECK_INT(colour_srgb_byte(c.x), k))
 			break;
 	}
 	/* b 0.5 0.5 0.5 decodes to 0.214 and shows as code 128 (0.5 * 255 = 127.5 rounds up). */
-	CHECK_INT(image_srgb_byte(image_srgb_to_linear(vec_make(REAL_C(0.5), REAL_C(0.5),
+	CHECK_INT(colour_srgb_byte(colour_srgb_to_linear(vec_make(REAL_C(0.5), REAL_C(0.5),
 							       REAL_C(0.5))).y),
 		  128);
 }
@@ -147,7 +148,7 @@ static void test_encode_row(void)
 #endif
 	colors[2] = vec_make(REAL_C(-1.0), REAL_C(0.01), REAL_C(0.25));
 	memset(bytes, 0xA5, sizeof bytes);
-	image_encode_row(colors, 3, bytes);
+	colour_encode_row(colors, 3, bytes);
 	CHECK(memcmp(bytes, expect, 9) == 0);
 	CHECK_INT(bytes[2], 188);
 	CHECK_INT(bytes[4], 0);
@@ -156,10 +157,10 @@ static void test_encode_row(void)
 	CHECK_INT(bytes[9], 0xA5);
 	CHECK_INT(bytes[11], 0xA5);
 	memset(bytes, 0xA5, sizeof bytes);
-	image_encode_row(colors, 1, bytes);
+	colour_encode_row(colors, 1, bytes);
 	CHECK(memcmp(bytes, expect, 3) == 0);
 	CHECK_INT(bytes[3], 0xA5);
-	image_encode_row(colors, 0, bytes);
+	colour_encode_row(colors, 0, bytes);
 	CHECK_INT(bytes[0], 0);
 	CHECK_INT(bytes[3], 0xA5);
 }

@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "diag.h"
+#include "load.h"
 #include "parse.h"
 #include "test.h"
 
@@ -836,7 +837,7 @@ static void test_file(void)
 	messages[0] = '\0';
 	message_count = 0;
 	diag_set_sink(capture, NULL);
-	CHECK_INT(parse_scene_file(&sc, "no-such-directory/none.nff"), 0);
+	CHECK_INT(load_scene_file(&sc, "no-such-directory/none.nff"), 0);
 	diag_set_sink(NULL, NULL);
 	CHECK_INT(message_count, 1);
 	CHECK(strncmp(messages, prefix, sizeof prefix - 1) == 0);

@@ -10,6 +10,7 @@
 #include "camera.h"
 #include "diag.h"
 #include "image.h"
+#include "load.h"
 #include "mcu.h"
 #include "parse.h"
 #include "preview.h"
@@ -50,7 +51,7 @@ static int usage_error(const char *what, const char *arg)
 static int read_int(const char *text, char stop, int max, int *out, const char **rest)
 {
 	long v;
-	const char *end = parse_digits(text, max, &v);
+	const char *end = lexer_digits(text, max, &v);
 	if (end == text || *end != stop || v < 1 || v > max)
 		return 0;
 	*out = (int)v;
@@ -59,7 +60,7 @@ static int read_int(const char *text, char stop, int max, int *out, const char *
 	return 1;
 }
 
-/* The options, in the order of enum option (for parse_keyword). */
+/* The options, in the order of enum option (for lexer_keyword). */
 static const char option_names[] = "--ascii\0--ids\0--stack\0-s\0-d\0--cols\0";
 enum option { OPT_ASCII, OPT_IDS, OPT_STACK, OPT_SIZE, OPT_DEPTH, OPT_COLUMNS, OPT_NONE };
 
@@ -71,7 +72,7 @@ static int parse_options(int argc, char **argv, options *o)
 	o->columns = PREVIEW_COLUMNS;
 	for (i = 1; i < argc; i++) {
 		const char *a = argv[i], *value, *rest;
-		enum option which = (enum option)parse_keyword(option_names, a);
+		enum option which = (enum option)lexer_keyword(option_names, a);
 		if (which == OPT_ASCII) {
 			o->format = FORMAT_ASCII;
 		} else if (which == OPT_IDS) {
@@ -105,7 +106,7 @@ static int load_builtin(const char **name)
 {
 #if RT_BUILTIN_SCENE
 	*name = rt_builtin_scene_name;
-	return parse_scene_buffer(&the_scene, *name, rt_builtin_scene, rt_builtin_scene_size);
+	return load_scene_buffer(&the_scene, *name, rt_builtin_scene, rt_builtin_scene_size);
 #else
 	(void)name;
 	return 0;
@@ -129,7 +130,7 @@ int main(int argc, char **argv)
 	int status = parse_options(argc, argv, &opt), width, height, ok;
 	if (status >= 0)
 		return status;
-	if (!(opt.scene_path ? parse_scene_file(&the_scene, opt.scene_path)
+	if (!(opt.scene_path ? load_scene_file(&the_scene, opt.scene_path)
 			     : load_builtin(&opt.scene_path)))
 		return 1;
 	width = opt.width ? opt.width : the_scene.camera.width;

@@ -5,8 +5,8 @@
 #include <string.h>
 
 #include "diag.h"
+#include "load.h"
 #include "mcu.h"
-#include "parse.h"
 #include "semihost.h"
 
 #define SCENE_CHUNK 128  /* bytes read from the host per call */
@@ -109,7 +109,7 @@ static int file_close(void *ctx, int ok)
 	return 1;
 }
 
-int parse_scene_file(scene *s, const char *path)
+int load_scene_file(scene *s, const char *path)
 {
 	/* Static: the stack is the scarcest memory here. */
 	static host_file f;
@@ -120,5 +120,5 @@ int parse_scene_file(scene *s, const char *path)
 	source.read = file_read;
 	source.close = file_close;
 	source.ctx = &f;
-	return parse_scene_source(s, path, &source);
+	return load_scene_source(s, path, &source);
 }

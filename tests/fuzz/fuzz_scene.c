@@ -9,7 +9,7 @@
 #include "camera.h"
 #include "diag.h"
 #include "image.h"
-#include "parse.h"
+#include "load.h"
 #include "preview.h"
 #include "render.h"
 #include "trace.h"
@@ -40,7 +40,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
 	camera cam;
 	diag_set_sink(quiet, NULL);
-	if (parse_scene_buffer(&fuzz_scene, "fuzz.nff", data, size)) {
+	if (load_scene_buffer(&fuzz_scene, "fuzz.nff", data, size)) {
 #if RT_USE_BVH
 		bvh_build(&fuzz_scene);
 #endif

@@ -1,0 +1,78 @@
+/* colour.c - sRGB, both ways.
+ * Colours are linear while tracing; each channel is clamped to [0, 1] and encoded with
+ * the sRGB transfer curve, the usual meaning of PPM samples in practice. Scene colours
+ * come in as sRGB and are decoded once at load, so `b 0.5 0.5 0.5` shows as 50% grey.
+ * See LICENSE for copyright and licence. */
+#include "colour.h"
+
+/* sRGB's transfer curve, linear light from an encoded value in [0, 1]. */
+static real decode_channel(real v)
+{
+	if (v <= REAL_C(0.0))
+		return REAL_C(0.0);
+	if (v >= REAL_C(1.0))
+		return v;
+	if (v <= REAL_C(0.04045))
+		return real_div(v, REAL_C(12.92));
+	return real_pow(real_div(v + REAL_C(0.055), REAL_C(1.055)), REAL_C(2.4));
+}
+
+vec3 colour_srgb_to_linear(vec3 srgb)
+{
+	return vec_make(decode_channel(srgb.x), decode_channel(srgb.y), decode_channel(srgb.z));
+}
+
+/* Linear value at which each 8-bit code starts: decode((code - 0.5) / 255), computed once
+ * in the build's own type, so that code -> linear -> code returns the same code; and for
+ * each j < 256 the largest code whose threshold is at most j / 256 (the thresholds times
+ * 256 are exact in every type). Encoding then starts from the code of linear's 1/256
+ * and steps up, without a power per pixel: a few steps, but near black, where the curve
+ * is steep (up to 13 codes in the first 1/256). */
+#define SRGB_STEPS 256 /* buckets of linear values in [0, 1) */
+static real srgb_thresholds[256];
+static unsigned char srgb_start[SRGB_STEPS];
+static int thresholds_ready;
+
+static void init_thresholds(void)
+{
+	int code, j;
+	srgb_thresholds[0] = REAL_C(0.0);
+	for (code = 1; code < 256; code++)
+		srgb_thresholds[code] =
+			decode_channel(real_div(real_from_int(code) - REAL_C(0.5), REAL_C(255.0)));
+	for (j = 0, code = 0; j < SRGB_STEPS; j++) {
+		while (code < 255 && srgb_thresholds[code + 1] * SRGB_STEPS <= real_from_int(j))
+			code++;
+		srgb_start[j] = (unsigned char)code;
+	}
+	thresholds_ready = 1;
+}
+
+unsigned char colour_srgb_byte(real linear)
+{
+	int code;
+	if (!thresholds_ready)
+		init_thresholds();
+	/* NaN fails every comparison and lands on 0, as do negatives. */
+	if (!(linear > REAL_C(0.0)))
+		return 0;
+	/* At 1 and above, past the last threshold (decode(254.5 / 255) < 1). */
+	if (!(linear < REAL_C(1.0)))
+		return 255;
+	/* Largest code whose threshold is <= linear (the thresholds increase), from the
+	 * largest one at or below linear's bucket. */
+	code = srgb_start[real_to_int(linear * SRGB_STEPS)];
+	while (code < 255 && srgb_thresholds[code + 1] <= linear)
+		code++;
+	return (unsigned char)code;
+}
+
+void colour_encode_row(const vec3 *colors, int count, unsigned char *bytes)
+{
+	int i;
+	for (i = 0; i < count; i++) {
+		bytes[3 * i + 0] = colour_srgb_byte(colors[i].x);
+		bytes[3 * i + 1] = colour_srgb_byte(colors[i].y);
+		bytes[3 * i + 2] = colour_srgb_byte(colors[i].z);
+	}
+}
