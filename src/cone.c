@@ -4,7 +4,20 @@
  * See LICENSE for copyright and licence. */
 #include "shape.h"
 
+#include "quadratic.h"
+
 #if RT_SHAPE_CONE
+
+void cone_init(cone_shape *c, vec3 base, vec3 axis, real length, real base_radius,
+	       real apex_radius)
+{
+	c->base = base;
+	c->axis = dir_normalize(axis);
+	c->length = length;
+	c->base_radius = base_radius;
+	c->apex_radius = apex_radius;
+	c->slope = real_div(apex_radius - base_radius, length);
+}
 
 int cone_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h)
 {

@@ -5,6 +5,14 @@
  * See LICENSE for copyright and licence. */
 #include "shape.h"
 
+void hedron_plane_init(halfspace *h, vec3 n, real2 length2, real d)
+{
+	/* Divided by the length as dir_normalize does (one reciprocal for all four). */
+	real_reciprocal per_length = real2_reciprocal_sqrt(length2);
+	h->normal = dir_times_reciprocal(n, per_length);
+	h->offset = real_times_reciprocal(d, per_length);
+}
+
 #if RT_HEDRON_PER_FACE
 /* The per-face form, for comparison only: hit each face's plane, then keep the point if
  * it is strictly inside every other plane. Rays through edges and vertices leak, because

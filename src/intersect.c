@@ -63,6 +63,16 @@ static void face_forward(const ray *r, hit *h)
 		h->shading = dir_neg(h->shading);
 }
 
+void origin_term_init(const object *o, vec3 origin, origin_term *k)
+{
+	if (o->kind == SHAPE_SPHERE) {
+		k->f = vec_sub(origin, o->u.sphere.center);
+		k->u.c = vec_dot2(k->f, k->f) - o->u.sphere.radius2;
+	} else if (o->kind == SHAPE_PLANE) {
+		k->u.distance = o->u.plane.offset - dir_dot_vec(o->u.plane.normal, origin);
+	}
+}
+
 void origin_terms_init(const scene *s, vec3 origin, origin_terms *k)
 {
 	int i;

@@ -9,7 +9,8 @@
 
 void lexer_init(lexer *lx, const char *file, read_fn read, void *ctx, int length_shift)
 {
-	memset(lx, 0, sizeof *lx);
+	/* The rest is zero already (the parser clears itself whole): one memset less of
+	 * M0 flash. */
 	lx->read = read;
 	lx->ctx = ctx;
 	lx->file = file;

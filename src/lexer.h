@@ -36,7 +36,8 @@ typedef struct {
 	int tiny_line;    /* line of the last number too small for the type (read as 0) */
 } lexer;
 
-/* Starts reading `file` through read(ctx), lengths times 2^length_shift. */
+/* Starts reading `file` through read(ctx), lengths times 2^length_shift, with a lexer
+ * whose other fields are zero. */
 void lexer_init(lexer *lx, const char *file, read_fn read, void *ctx, int length_shift);
 
 /* Reports the first error only (later ones would be consequences) and returns 0. */

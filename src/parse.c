@@ -286,64 +286,6 @@ static int parse_sphere(parser *p)
 	return 1;
 }
 
-/* Newell's normal of vertices[0..count), as a unit vector; the zero vector when the
- * polygon fills nothing (its vertices on one line). Its components are areas (products of lengths), summed as real2
- * and brought back to size by the largest before normalising. Axis by axis in a loop,
- * component k from the two axes after it: one copy of the arithmetic, not three. */
-static void newell_sums(const vec3 *v, int count, real2 n[3])
-{
-	int i, k;
-	n[0] = n[1] = n[2] = 0;
-	for (i = 0; i < count; i++) {
-		/* The vertices by pointer: copies of them cost 20 bytes of M0 flash. */
-		const vec3 *a = &v[i], *b = &v[i + 1 == count ? 0 : i + 1];
-		for (k = 0; k < 3; k++) {
-			int j = k == 2 ? 0 : k + 1, m = k == 0 ? 2 : k - 1;
-			/* Saturating: the measuring pass reads coordinates up to fixed point's
-			 * limit. */
-			n[k] += real_mul2(real_add(vec_get(*a, j), -vec_get(*b, j)),
-					  real_add(vec_get(*a, m), vec_get(*b, m)));
-		}
-	}
-}
-
-static dir3 newell_normal(const vec3 *v, int count)
-{
-	real2 n[3], largest = 0;
-	real part[3];
-	int i, k;
-	newell_sums(v, count, n);
-	/* A signed area of zero need not mean nothing is filled: the even-odd rule fills
-	 * both lobes of a symmetric bow-tie, whose signed areas cancel. Its plane is then
-	 * that of the first three consecutive vertices not on one line; only a polygon
-	 * whose vertices all are fills nothing. */
-	for (i = 0; n[0] == 0 && n[1] == 0 && n[2] == 0 && i + 3 <= count && count > 3; i++)
-		newell_sums(v + i, 3, n);
-	for (k = 0; k < 3; k++)
-		largest = real_max(largest, n[k] < 0 ? -n[k] : n[k]);
-	if (!(largest > 0))
-		return dir_make(UNIT_C(0.0), UNIT_C(0.0), UNIT_C(0.0));
-	for (k = 0; k < 3; k++)
-		part[k] = real2_ratio(n[k], largest);
-	return dir_normalize(vec_make(part[0], part[1], part[2]));
-}
-
-/* The mean of vertices[0..count), summed as real2 so that many large coordinates cannot
- * overflow fixed point. Axis by axis, one sum at a time (each still in vertex order, so
- * the same sums in every type): 32 bytes less M0 flash than three sums side by side. */
-static vec3 centroid_of(const vec3 *v, int count)
-{
-	real n = real_from_int(count), mean[3];
-	int i, k;
-	for (k = 0; k < 3; k++) {
-		real2 sum = 0;
-		for (i = 0; i < count; i++)
-			sum += real2_from(vec_get(v[i], k));
-		mean[k] = real2_div(sum, n);
-	}
-	return vec_make(mean[0], mean[1], mean[2]);
-}
-
 /* `p n` or `pp n` followed by n vertices (pp: each with its normal). Apart (REAL_APART):
  * inlined into the entity loop it cost 48 bytes more M0 flash. */
 REAL_APART static int parse_polygon(parser *p, int patch)
@@ -352,8 +294,6 @@ REAL_APART static int parse_polygon(parser *p, int patch)
 	int line = p->lx.tok_line, i, first = s->vertex_count;
 	long count;
 	dir3 normal;
-	vec3 centroid;
-	polygon_shape *poly;
 	object *o;
 
 	if (!lexer_read_count(&p->lx, patch ? "patch vertex count" : "polygon vertex count", 3,
@@ -376,7 +316,7 @@ REAL_APART static int parse_polygon(parser *p, int patch)
 		}
 #endif
 	}
-	normal = newell_normal(s->vertices + first, (int)count);
+	normal = polygon_normal(s->vertices + first, (int)count);
 	if (!(dir_dot(normal, normal) > 0)) {
 		warn(p, line, patch ? "patch with zero area" : "polygon with zero area");
 		return 1;
@@ -384,27 +324,7 @@ REAL_APART static int parse_polygon(parser *p, int patch)
 	o = new_object(p, patch ? SHAPE_PATCH : SHAPE_POLYGON, line);
 	if (!o)
 		return 0;
-	poly = &o->u.polygon;
-	poly->normal = normal;
-	/* The plane passes through the centroid: the best fit for slightly non-planar input. */
-	centroid = centroid_of(s->vertices + first, (int)count);
-	poly->offset = dir_dot_vec(poly->normal, centroid);
-	poly->first = first;
-	poly->count = (int)count;
-#if RT_SHAPE_PATCH
-	poly->axis = unit_fabs(poly->normal.x) > unit_fabs(poly->normal.y)
-			     ? (unit_fabs(poly->normal.x) > unit_fabs(poly->normal.z) ? 0 : 2)
-			     : (unit_fabs(poly->normal.y) > unit_fabs(poly->normal.z) ? 1 : 2);
-	for (i = 0; i < count; i++)
-		s->projected[first + i] = polygon_project(s->vertices[first + i], poly->axis);
-	if (patch) {
-		/* A zero vertex normal falls back to the face normal. */
-		for (i = 0; i < count; i++) {
-			dir3 *n = &s->normals[first + i];
-			*n = dir_dot(*n, *n) > 0 ? *n : poly->normal;
-		}
-	}
-#endif
+	polygon_init(s, &o->u.polygon, normal, first, (int)count, patch);
 	s->vertex_count += (int)count;
 	return 1;
 }
@@ -449,12 +369,7 @@ static int parse_cone(parser *p)
 	if (!o)
 		return 0;
 	o->flags |= inside_only;
-	o->u.cone.base = base;
-	o->u.cone.axis = dir_normalize(axis);
-	o->u.cone.length = length;
-	o->u.cone.base_radius = base_radius;
-	o->u.cone.apex_radius = apex_radius;
-	o->u.cone.slope = real_div(apex_radius - base_radius, length);
+	cone_init(&o->u.cone, base, axis, length, base_radius, apex_radius);
 	return 1;
 }
 #endif
@@ -465,18 +380,13 @@ static int add_halfspace(parser *p, vec3 n, real d, int line)
 {
 	scene *s = p->s;
 	real2 length2 = vec_dot2(n, n);
-	real_reciprocal per_length;
 	if (!(length2 > 0))
 		return lexer_fail(&p->lx, p->lx.tok_line, "polyhedron: a plane normal is %s",
 			    zero_word(p, p->lx.tok_line, not_all_zero(n)));
 	if (s->plane_count == RT_MAX_PLANES)
 		return capacity_error(p, line, "polyhedron planes in the scene", "RT_MAX_PLANES",
 				      RT_MAX_PLANES);
-	/* Divided by the length as dir_normalize does (one reciprocal for all four). */
-	per_length = real2_reciprocal_sqrt(length2);
-	s->planes[s->plane_count].normal = dir_times_reciprocal(n, per_length);
-	s->planes[s->plane_count].offset = real_times_reciprocal(d, per_length);
-	s->plane_count++;
+	hedron_plane_init(&s->planes[s->plane_count++], n, length2, d);
 	return 1;
 }
 
@@ -552,8 +462,7 @@ static int parse_plane(parser *p)
 	o = new_object(p, SHAPE_PLANE, line);
 	if (!o)
 		return 0;
-	o->u.plane.normal = dir_normalize(normal);
-	o->u.plane.offset = dir_dot_vec(o->u.plane.normal, point);
+	plane_init(&o->u.plane, &point, normal);
 	return 1;
 }
 

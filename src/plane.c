@@ -8,14 +8,15 @@
  * compute with). See LICENSE for copyright and licence. */
 #include "shape.h"
 
+void plane_init(plane_shape *pl, const vec3 *point, vec3 normal)
+{
+	pl->normal = dir_normalize(normal);
+	pl->offset = dir_dot_vec(pl->normal, *point);
+}
+
 real plane_gap(dir3 normal, real offset, const vec3 *origin)
 {
 	return real_add(offset, -dir_dot_vec(normal, *origin));
-}
-
-int plane_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h)
-{
-	return plane_intersect_from(o, r, NULL, tmin, tmax, h);
 }
 
 int plane_intersect_from(const object *o, const ray *r, const origin_term *k, real tmin,

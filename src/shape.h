@@ -38,10 +38,33 @@ typedef struct {
  * into the dispatch that the scene's loops inline (intersect.c), their frames added up to
  * one of 204 bytes that every test paid to set up. */
 
-int sphere_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h);
+/* ---- set-up: each shape from the numbers the parser read --------------------------- */
 
 /* Sets a sphere's centre and radius (> 0), and the terms made from the radius. */
 void sphere_init(sphere_shape *s, vec3 center, real radius);
+
+/* Newell's normal of vertices[0 .. count), as a unit vector; the zero vector when the
+ * polygon fills nothing (its vertices all on one line). */
+dir3 polygon_normal(const vec3 *vertices, int count);
+
+/* Sets a polygon (patch = 1: a patch, whose vertex normals are s->normals from `first`)
+ * of s->vertices[first .. first + count) with its normal from polygon_normal. */
+void polygon_init(scene *s, polygon_shape *poly, dir3 normal, int first, int count, int patch);
+
+/* Sets a cone from its base centre, its axis (apex - base, of length `length` > 0) and
+ * its two radii (of one sign, not both 0). */
+void cone_init(cone_shape *c, vec3 base, vec3 axis, real length, real base_radius,
+	       real apex_radius);
+
+/* Sets the half-space n.x <= d, normalised; length2 = |n|^2 > 0. */
+void hedron_plane_init(halfspace *h, vec3 n, real2 length2, real d);
+
+/* Sets the plane through `point` with normal `normal` (not zero). */
+void plane_init(plane_shape *pl, const vec3 *point, vec3 normal);
+
+/* ---- intersection ------------------------------------------------------------------ */
+
+int sphere_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h);
 
 /* The terms of a sphere's or a plane's test that depend on the ray's origin alone, which
  * rays sharing an origin (every eye ray) can compute once. */
@@ -53,8 +76,7 @@ typedef struct {
 	} u;
 } origin_term;
 
-/* Fills k for an object and an origin (nothing for shapes without such terms). */
-void origin_term_init(const object *o, vec3 origin, origin_term *k);
+/* origin_term_init (intersect.h) fills them. */
 
 #if REAL_FIXED
 /* 1 only when the sphere test's clear-miss tests would reject the ray with unit
@@ -75,7 +97,6 @@ REAL_APART int polygon_intersect(const scene *s, const object *o, const ray *r, 
 int cone_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h);
 REAL_APART int hedron_intersect(const scene *s, const object *o, const ray *r, real tmin,
 				real tmax, hit *h);
-int plane_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h);
 /* offset - n.origin: how far the plane n.x = offset lies ahead of the origin along n,
  * saturating (an origin far beyond the scene, a hit whose point saturated, has a dot
  * product at the edge of fixed point's range). One copy on the M0 (plane.c). */
@@ -92,9 +113,5 @@ int polygon_contains_ray(const vec3 *vertices, int count, const ray *r);
 vec2 polygon_project(vec3 p, int axis);
 #endif
 
-/* Solves a t^2 + 2 b t + c = 0 for its roots t0 <= t1 without cancellation
- * (Press et al.: q = -(b + sign(b) sqrt(b^2 - a c)), t0 = c/q, t1 = q/a), given the
- * discriminant b^2 - a c computed by the caller. Returns the number of roots (0 or 2). */
-int solve_quadratic(real a, real b, real2 c, real2 discriminant, real *t0, real *t1);
 
 #endif

@@ -4,32 +4,7 @@
  * See LICENSE for copyright and licence. */
 #include "shape.h"
 
-int solve_quadratic(real a, real b, real2 c, real2 discriminant, real *t0, real *t1)
-{
-	real root, q;
-	/* `!(x >= 0)` also rejects NaN (numerics.md N01). */
-	if (!(discriminant >= 0))
-		return 0;
-	root = real2_sqrt(discriminant);
-	q = b >= REAL_C(0.0) ? -real_add(b, root) : real_add(root, -b);
-	/* q = 0 only when b = 0 and the discriminant is 0: a tangent at the origin (S19). */
-	if (q == REAL_C(0.0)) {
-		if (a == REAL_C(0.0))
-			return 0;
-		*t0 = *t1 = REAL_C(0.0);
-		return 2;
-	}
-	*t0 = real2_div(c, q);
-	/* a = 0 is the linear case (a ray parallel to a cylinder's axis): one root only;
-	 * a = 1 (a unit direction, often exactly) needs no division. */
-	*t1 = a == REAL_C(0.0) ? *t0 : a == REAL_C(1.0) ? q : real_div(q, a);
-	if (*t1 < *t0) {
-		real swap = *t0;
-		*t0 = *t1;
-		*t1 = swap;
-	}
-	return 2;
-}
+#include "quadratic.h"
 
 void sphere_init(sphere_shape *s, vec3 center, real radius)
 {
@@ -47,16 +22,6 @@ void sphere_init(sphere_shape *s, vec3 center, real radius)
 int sphere_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h)
 {
 	return sphere_intersect_from(o, r, NULL, tmin, tmax, h);
-}
-
-void origin_term_init(const object *o, vec3 origin, origin_term *k)
-{
-	if (o->kind == SHAPE_SPHERE) {
-		k->f = vec_sub(origin, o->u.sphere.center);
-		k->u.c = vec_dot2(k->f, k->f) - o->u.sphere.radius2;
-	} else if (o->kind == SHAPE_PLANE) {
-		k->u.distance = o->u.plane.offset - dir_dot_vec(o->u.plane.normal, origin);
-	}
 }
 
 #if REAL_FIXED

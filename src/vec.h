@@ -52,7 +52,6 @@ VEC_FUNCTION vec3 vec_madd(vec3 a, real s, vec3 b);
 VEC_FUNCTION vec3 vec_cross(vec3 a, vec3 b);
 VEC_FUNCTION real2 vec_dot2(vec3 a, vec3 b);
 VEC_FUNCTION real vec_length(vec3 a);
-VEC_FUNCTION vec3 vec_div(vec3 a, real s);
 VEC_FUNCTION vec3 vec_times_reciprocal(vec3 a, real_reciprocal r);
 VEC_FUNCTION real vec_max_abs(vec3 a);
 VEC_FUNCTION dir3 dir_times_reciprocal(vec3 a, real_reciprocal r);
@@ -137,13 +136,6 @@ VEC_FUNCTION real2 vec_dot2(vec3 a, vec3 b)
 }
 
 VEC_FUNCTION real vec_length(vec3 a) { return real2_sqrt(vec_dot2(a, a)); }
-
-/* a / s: one reciprocal for the three components (fixed point keeps 31 bits of it, not
- * Q16.16's 16: 1/2560 would be 26 LSB, off by 1.6%), so one division, not three. */
-VEC_FUNCTION vec3 vec_div(vec3 a, real s)
-{
-	return vec_times_reciprocal(a, real_reciprocal_of(s));
-}
 
 /* a divided by the number whose reciprocal r is. */
 VEC_FUNCTION vec3 vec_times_reciprocal(vec3 a, real_reciprocal r)

@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "quadratic.h"
 #include "shape.h"
 #include "support.h"
 #include "test.h"
