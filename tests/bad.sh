@@ -13,37 +13,28 @@
 # A UTF-16 case carries this line in UTF-16: its NUL and byte-order-mark bytes are dropped
 # before reading it (so are a UTF-8 mark's and a CR).
 
+. tests/lib.sh
 RT=${RT:-./rt}
 # Bytes, not characters: the cases hold invalid UTF-8 on purpose.
 LC_ALL=C
 export LC_ALL
-passed=0
-failed=0
+# A hang is a failure, not a stuck test run: every run stops after 10 s (lib.sh's run).
+run_limit=10
+make_tmp
 
-# A hang is a failure, not a stuck test run.
-if command -v timeout >/dev/null 2>&1; then
-	limit="timeout 10"
-else
-	limit=
-fi
-
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/rt-bad.XXXXXX") || exit 1
-trap 'rm -rf "$tmp"' EXIT
-trap 'exit 1' HUP INT TERM
-
-# ---- helpers -----------------------------------------------------------------------
+# ---- helpers (ok, run, size_of and the PPM checks are in tests/lib.sh) ----------------
 
 problems=0
 # problem NAME WHAT: one failure line; the case fails.
 problem() {
-	echo "bad.sh: $1: $2"
+	echo "$label: $1: $2"
 	problems=$((problems + 1))
 }
 
 # start_case / end_case: a case passes when no check in it found a problem.
 start_case() { problems=0; }
 end_case() {
-	if [ "$problems" -eq 0 ]; then passed=$((passed + 1)); else failed=$((failed + 1)); fi
+	if [ "$problems" -eq 0 ]; then ok; else failed=$((failed + 1)); fi
 }
 
 # expectation FILE: the first line without its `# expect ` (and without NUL, BOM and CR).
@@ -51,16 +42,10 @@ expectation() {
 	dd if="$1" bs=512 count=1 2>/dev/null | tr -d '\000\357\273\277\376\377\r' | head -n 1 | sed -n 's/^# expect //p'
 }
 
-# run ARGS...: rt under the time limit; output in $tmp/out and $tmp/err, status in $status.
-run() {
-	$limit "$RT" "$@" >"$tmp/out" 2>"$tmp/err"
-	status=$?
-}
-
 # describe_status: a readable account of $status.
 describe_status() {
-	if [ "$status" -eq 124 ] && [ -n "$limit" ]; then
-		echo "timed out after 10 s"
+	if [ "$status" -eq 124 ] && [ -n "$has_timeout" ]; then
+		echo "timed out after $run_limit s"
 	elif [ "$status" -gt 128 ]; then
 		echo "killed by signal $((status - 128))"
 	else
@@ -69,7 +54,6 @@ describe_status() {
 }
 
 lines_of() { wc -l <"$1" | tr -d ' '; }
-size_of() { wc -c <"$1" | tr -d ' '; }
 first_err() { head -n 3 "$tmp/err" | cut -c 1-200; }
 
 # scene_size FILE: "W H" from the last `resolution` in the scene (a later `v` replaces an
@@ -86,12 +70,8 @@ scene_size() {
 
 # check_ppm NAME FILE W H: FILE is exactly a P6 header for WxH and W*H*3 bytes.
 check_ppm() {
-	printf 'P6\n%d %d\n255\n' "$3" "$4" >"$tmp/header"
-	hlen=$(size_of "$tmp/header")
-	if ! dd if="$2" bs="$hlen" count=1 2>/dev/null | cmp -s - "$tmp/header"; then
-		problem "$1" "the image does not start with 'P6 $3 $4 255'"
-	fi
-	want=$((hlen + $3 * $4 * 3))
+	ppm_header_is "$2" "$3" "$4" || problem "$1" "the image does not start with 'P6 $3 $4 255'"
+	want=$(ppm_size "$3" "$4")
 	got=$(size_of "$2")
 	[ "$got" -eq "$want" ] || problem "$1" "the image is $got bytes, expected $want"
 }
@@ -278,5 +258,4 @@ kill -s TERM "$pid" 2>/dev/null
 check_o_untouched "$name"
 end_case
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+summary

@@ -3,32 +3,16 @@
 # Run from the repository root as `RT=./rt sh tests/cli.sh`; ends with `N passed, N failed`.
 # See LICENSE for copyright and licence.
 
+. tests/lib.sh
 RT=${RT:-./rt}
 # Absolute, so a test may run from another directory.
 case $RT in
 /*) ;;
 *) RT=$(pwd)/$RT ;;
 esac
-passed=0
-failed=0
+make_tmp
 
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/rt-cli.XXXXXX") || exit 1
-trap 'rm -rf "$tmp"' EXIT
-trap 'exit 1' HUP INT TERM
-
-# ---- helpers -----------------------------------------------------------------------
-
-ok() { passed=$((passed + 1)); }
-bad() {
-	echo "cli.sh: $*"
-	failed=$((failed + 1))
-}
-
-# Runs rt with its output in $tmp/out and $tmp/err, the exit status in $status.
-run() {
-	"$RT" "$@" >"$tmp/out" 2>"$tmp/err"
-	status=$?
-}
+# ---- helpers (ok, bad, run, size_of and the PPM checks are in tests/lib.sh) ----------
 
 # expect_status WHAT N: the last run exited with N.
 expect_status() {
@@ -52,16 +36,10 @@ expect_no_stderr() {
 	if [ -s "$tmp/err" ]; then bad "$1: unexpected stderr: $(head -n 3 "$tmp/err")"; else ok; fi
 }
 
-size_of() { wc -c <"$1" | tr -d ' '; }
-
 # expect_ppm WHAT FILE W H: FILE is exactly a P6 header for WxH plus W*H*3 bytes.
 expect_ppm() {
-	printf 'P6\n%d %d\n255\n' "$3" "$4" >"$tmp/header"
-	hlen=$(size_of "$tmp/header")
-	if dd if="$2" bs="$hlen" count=1 2>/dev/null | cmp -s - "$tmp/header"; then ok; else
-		bad "$1: header is not 'P6 $3 $4 255'"
-	fi
-	want=$((hlen + $3 * $4 * 3))
+	if ppm_header_is "$2" "$3" "$4"; then ok; else bad "$1: header is not 'P6 $3 $4 255'"; fi
+	want=$(ppm_size "$3" "$4")
 	got=$(size_of "$2")
 	if [ "$got" -eq "$want" ]; then ok; else bad "$1: $got bytes, expected $want"; fi
 }
@@ -342,7 +320,7 @@ fi
 # A FIFO is written straight into, and its reader gets the image.
 if mkfifo pipe.ppm 2>/dev/null; then
 	# The reader gives up after 10 s: a FIFO replaced by a file would block it forever.
-	timeout 10 cat pipe.ppm >from-pipe.ppm &
+	within 10 cat pipe.ppm >from-pipe.ppm &
 	reader=$!
 	run "$tmp/ok.nff" -o pipe.ppm
 	wait "$reader"
@@ -660,5 +638,4 @@ if [ -x build/rt-small ]; then
 	fi
 fi
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+summary

@@ -4,18 +4,10 @@
 # dynamic range it cannot hold, and contains no floating-point instruction.
 # Run from the repository root after `make build/rt-fixed build/rt-ref`; ends with
 # `N passed, N failed`. See LICENSE for copyright and licence.
+. tests/lib.sh
 FIXED=${FIXED:-build/rt-fixed}
 REF=${REF:-build/rt-ref}
-passed=0
-failed=0
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/rt-fixed.XXXXXX") || exit 1
-trap 'rm -rf "$tmp"' EXIT
-
-ok() { passed=$((passed + 1)); }
-bad() {
-	echo "fixed.sh: $*"
-	failed=$((failed + 1))
-}
+make_tmp
 
 # Every bundled scene: at most 1% of pixels may hit another object than in the
 # reference (the issue's target); they stay far below it (0-0.25%).
@@ -131,7 +123,7 @@ fi
 if mkfifo "$tmp/fifo" 2>/dev/null; then
 	cat "$tmp/pipe.nff" >"$tmp/fifo" &
 	# A FIFO opened twice would wait for a second writer: bound the wait.
-	timeout 60 "$FIXED" "$tmp/fifo" >"$tmp/fifo.ppm" 2>"$tmp/err"
+	within 60 "$FIXED" "$tmp/fifo" >"$tmp/fifo.ppm" 2>"$tmp/err"
 	status=$?
 	if [ "$status" -eq 0 ] && cmp -s "$tmp/file.ppm" "$tmp/fifo.ppm"; then ok; else
 		bad "scene from a FIFO: status $status, not the file's image ($(head -n 2 "$tmp/err"))"
@@ -146,10 +138,9 @@ if [ "$status" -eq 1 ] && [ "$(wc -l <"$tmp/err")" -eq 1 ] &&
 	grep -q "^rt: /dev/stdin:2: unknown command 'bogus'" "$tmp/err"; then ok; else
 	bad "error in a piped scene: status $status, $(head -n 3 "$tmp/err")"
 fi
-if timeout 60 "$FIXED" /dev/zero >/dev/null 2>"$tmp/err" ||
+if within 60 "$FIXED" /dev/zero >/dev/null 2>"$tmp/err" ||
 	! grep -q "^rt: /dev/zero:1: unexpected byte 0x00" "$tmp/err"; then
 	bad "endless input: $(head -n 2 "$tmp/err")"
 else ok; fi
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+summary

@@ -7,54 +7,44 @@
 # The references are made by tools/update-golden; the size of each render is taken
 # from its reference's header (rt writes it on the second line: "W H").
 # See LICENSE for copyright and licence.
+. tests/lib.sh
 RT=${RT:-./rt}
 PYTHON=${PYTHON:-python3}
-passed=0
-failed=0
-
-fail() {
-	echo "golden.sh: $1: $2"
-	failed=$((failed + 1))
-}
-
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/golden.XXXXXX") || exit 1
-trap 'rm -rf "$tmp"' EXIT
-trap 'exit 1' HUP INT TERM
+make_tmp
 
 for scene in scenes/*.nff; do
 	[ -f "$scene" ] || continue
 	name=$(basename "$scene" .nff)
 	ref=tests/golden/$name.ppm
 	if [ ! -f "$ref" ]; then
-		fail "$name" "no reference $ref (make it with tools/update-golden $name)"
+		bad "$name: no reference $ref (make it with tools/update-golden $name)"
 		continue
 	fi
 	size=$(sed -n '2{s/^\([0-9][0-9]*\) \([0-9][0-9]*\)$/\1x\2/p;q;}' "$ref")
 	if [ -z "$size" ]; then
-		fail "$name" "cannot read the size from $ref"
+		bad "$name: cannot read the size from $ref"
 		continue
 	fi
 	if ! "$RT" -s "$size" -o "$tmp/$name.ppm" "$scene" 2>"$tmp/$name.err"; then
-		fail "$name" "rt failed: $(head -n 1 "$tmp/$name.err")"
+		bad "$name: rt failed: $(head -n 1 "$tmp/$name.err")"
 		continue
 	fi
 	if [ -s "$tmp/$name.err" ]; then
-		fail "$name" "unexpected output on standard error: $(head -n 1 "$tmp/$name.err")"
+		bad "$name: unexpected output on standard error: $(head -n 1 "$tmp/$name.err")"
 		continue
 	fi
 	if ! why=$("$PYTHON" tests/imgcmp.py "$tmp/$name.ppm" "$ref" 2>&1); then
-		fail "$name" "$why"
+		bad "$name: $why"
 		continue
 	fi
-	passed=$((passed + 1))
+	ok
 done
 
 # A reference whose scene is gone is stale.
 for ref in tests/golden/*.ppm; do
 	[ -f "$ref" ] || continue
 	name=$(basename "$ref" .ppm)
-	[ -f "scenes/$name.nff" ] || fail "$name" "reference $ref has no scene scenes/$name.nff"
+	[ -f "scenes/$name.nff" ] || bad "$name: reference $ref has no scene scenes/$name.nff"
 done
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+summary

@@ -4,18 +4,10 @@
 # no heap and no soft float linked, M0 text <= 24 KiB, data + bss + worst-case stack
 # <= 16 KiB. Run by `make test-mcu` (and by `make test` when the cross compiler exists).
 cd "$(dirname "$0")/.." || exit 1
-passed=0
-failed=0
-tmp=$(mktemp -d) || exit 1
-trap 'rm -rf "$tmp"' EXIT
+. tests/lib.sh
+label=FAIL # its failure lines read `FAIL: what`
+make_tmp
 
-ok() {
-	passed=$((passed + 1))
-}
-bad() {
-	echo "FAIL: $*"
-	failed=$((failed + 1))
-}
 check() { # check DESCRIPTION COMMAND...
 	what=$1
 	shift
@@ -33,7 +25,7 @@ run_mcu() {
 	shift 4
 	mcu_args="arg=rt"
 	for a in "$@"; do mcu_args="$mcu_args,arg=$a"; done
-	timeout 600 qemu-system-arm -M "$mcu_board" -display none -serial none -monitor none \
+	within 600 qemu-system-arm -M "$mcu_board" -display none -serial none -monitor none \
 		-semihosting-config "enable=on,target=native,$mcu_args" -kernel "$mcu_elf" \
 		>"$mcu_out" 2>"$mcu_err"
 }
@@ -145,5 +137,4 @@ if [ -f build/mcu/rt-m0-builtin.elf ]; then
 	./build/rt-fixed -s 80x60 scenes/mcu-glass.nff >"$tmp/host.out"
 	check "builtin: a named scene does not win" cmp -s "$tmp/mcu.out" "$tmp/host.out"
 fi
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+summary

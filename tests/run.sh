@@ -6,8 +6,7 @@
 #   the reference (fixed.sh) and the hard scenes against the visibility oracle in every
 #   number type (watertight.sh).
 cd "$(dirname "$0")/.." || exit 1
-passed=0
-failed=0
+. tests/lib.sh
 
 # Adds a suite's `N passed, N failed` line (the last line of its output) to the totals.
 tally() {
@@ -64,5 +63,4 @@ if command -v arm-none-eabi-gcc >/dev/null 2>&1; then
 else
 	echo "mcu: skipped (no arm-none-eabi-gcc; the MCU build needs it)"
 fi
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+summary

@@ -8,14 +8,12 @@
 # at most 1 %, or, for the scenes it cannot hold, a refusal by name.
 # Run from the repository root after `make rt build/rt-float build/rt-ref build/rt-fixed`;
 # ends with `N passed, N failed`. See LICENSE for copyright and licence.
+. tests/lib.sh
 FLOAT=${FLOAT:-build/rt-float}
 DOUBLE=${DOUBLE:-./rt}
 REF=${REF:-build/rt-ref}
 FIXED=${FIXED:-build/rt-fixed}
-passed=0
-failed=0
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/rt-watertight.XXXXXX") || exit 1
-trap 'rm -rf "$tmp"' EXIT
+make_tmp
 
 # Visibility scenes are judged by their object ids; the near-surface ones by their shading
 # too (false shadows and lights).
@@ -87,4 +85,4 @@ for type in double float ref fixed; do
 	passed=$((passed + $(grep -c '^ok$' "$tmp/$type.log")))
 	failed=$((failed + $(grep -c '^bad$' "$tmp/$type.log")))
 done
-echo "$passed passed, $failed failed"
+summary
