@@ -6,6 +6,7 @@
 #include "test.h"
 
 int test_passed, test_failed;
+unsigned long long test_random_state;
 
 int test_check(int cond, const char *file, int line, const char *what)
 {

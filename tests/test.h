@@ -5,6 +5,7 @@
 #define RT_TEST_H
 
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 
 #include "real.h"
@@ -23,6 +24,42 @@ int test_check_int(long actual, long expected, const char *file, int line, const
 			#actual)
 #define CHECK_INT(actual, expected)                                                           \
 	test_check_int((long)(actual), (long)(expected), __FILE__, __LINE__, #actual)
+
+/* Seeded random numbers, one generator for every suite: Knuth's MMIX linear congruential
+ * generator (64-bit state), the same numbers on every machine and in every build. A test
+ * seeds it before it draws, so its numbers do not depend on what ran before it; the state
+ * is defined beside test_passed. */
+extern unsigned long long test_random_state;
+
+static inline void test_seed(unsigned long long seed)
+{
+	test_random_state = seed;
+}
+
+/* The next state: x * 6364136223846793005 + 1442695040888963407 (mod 2^64). */
+static inline unsigned long long test_random_next(void)
+{
+	test_random_state = test_random_state * 6364136223846793005ULL + 1442695040888963407ULL;
+	return test_random_state;
+}
+
+/* 32 random bits: the state's top half (an LCG's low bits repeat with short periods). */
+static inline uint32_t test_random_bits(void)
+{
+	return (uint32_t)(test_random_next() >> 32);
+}
+
+/* A uniform double in [0, 1): the state's top 53 bits. */
+static inline double test_random(void)
+{
+	return (double)(test_random_next() >> 11) * (1.0 / 9007199254740992.0);
+}
+
+/* A uniform double in [lo, hi). */
+static inline double test_random_range(double lo, double hi)
+{
+	return lo + (hi - lo) * test_random();
+}
 
 /* One Q16.16 step, 2^-16: the unit in which fixed-point tolerances are counted. */
 #define LSB (1.0 / 65536.0)

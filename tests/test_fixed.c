@@ -10,16 +10,6 @@
 
 static double to_double(int32_t x) { return x / 65536.0; }
 
-/* A small seeded generator (xorshift32): the same numbers on every machine. */
-static uint32_t next_random(uint32_t *state)
-{
-	uint32_t x = *state;
-	x ^= x << 13;
-	x ^= x >> 17;
-	x ^= x << 5;
-	return *state = x;
-}
-
 static void test_products(void)
 {
 	/* Q01: 181^2 fits Q16.16, 182^2 does not; the 64-bit square (real2) holds both. */
@@ -102,11 +92,11 @@ static void test_roots(void)
 	{
 		/* Against the exact rule, on seeded random numbers of every size: r is the
 		 * rounded root when (r - 1/2)^2 <= x < (r + 1/2)^2, i.e. r^2 - r < x <= r^2 + r. */
-		uint32_t state = 99u;
 		int i, wrong = 0;
+		test_seed(99);
 		for (i = 0; i < 20000; i++) {
-			uint64_t x = ((uint64_t)next_random(&state) << 32 | next_random(&state)) >>
-				     (next_random(&state) % 64u);
+			uint64_t x = ((uint64_t)test_random_bits() << 32 | test_random_bits()) >>
+				     (test_random_bits() % 64u);
 			uint64_t r = fixed_isqrt64(x);
 			/* r^2 - r < x <= r^2 + r, in 64 bits: r <= 2^32 so r^2 - r fits. */
 			if (r > 0 && !(r * r - r < x && (x - (r * r - r)) <= 2 * r))
@@ -132,16 +122,16 @@ static void test_roots(void)
 		/* The same bits as the definition (whose first step's products fold to 16-bit
 		 * halves times the table's 9 bits): every power of two and its neighbours, then
 		 * seeded random numbers of every size. */
-		uint32_t state = 31u;
 		int i, wrong = 0;
+		test_seed(31);
 		for (i = 0; i < 200000; i++) {
 			int64_t w;
 			fixed_reciprocal r, expect;
 			if (i < 63 * 3)
 				w = ((int64_t)1 << (i / 3)) + (i % 3) - 1;
 			else
-				w = (int64_t)(((uint64_t)next_random(&state) << 32 | next_random(&state)) >>
-					      (1 + next_random(&state) % 63u));
+				w = (int64_t)(((uint64_t)test_random_bits() << 32 | test_random_bits()) >>
+					      (1 + test_random_bits() % 63u));
 			r = fixed_reciprocal_sqrt2(w);
 			expect = reference_reciprocal_sqrt2(w);
 			if (r.scale != expect.scale || r.shift != expect.shift ||
@@ -156,13 +146,13 @@ static void test_roots(void)
 		/* Seeded random vectors of every size: each component over the length within
 		 * 0.5 LSB (rounding) plus 2^-10 LSB (the reciprocal's 2^-29); the length within
 		 * an LSB plus 2^-29 of it (4 LSB at 2^31). */
-		uint32_t state = 7u;
 		int i, wrong = 0;
+		test_seed(7);
 		for (i = 0; i < 20000; i++) {
-			int shift = (int)(next_random(&state) % 31u);
-			int32_t x = (int32_t)(next_random(&state) >> 2) >> shift;
-			int32_t y = (int32_t)(next_random(&state) >> 2) >> shift;
-			int32_t z = -((int32_t)(next_random(&state) >> 2) >> shift);
+			int shift = (int)(test_random_bits() % 31u);
+			int32_t x = (int32_t)(test_random_bits() >> 2) >> shift;
+			int32_t y = (int32_t)(test_random_bits() >> 2) >> shift;
+			int32_t z = -((int32_t)(test_random_bits() >> 2) >> shift);
 			int64_t w = (int64_t)x * x + (int64_t)y * y + (int64_t)z * z;
 			fixed_reciprocal r;
 			long double length;
@@ -242,7 +232,7 @@ static void test_parsing(void)
 }
 
 /* Operands worth checking: the edges of the range, and random numbers of every size. */
-static int32_t operand(uint32_t *state, int i)
+static int32_t operand(int i)
 {
 	static const int32_t edges[] = {0,      1,     -1,     65535,     65536,     -65536,
 					32767,  32768, -32768, INT32_MAX, -INT32_MAX, INT32_MIN,
@@ -251,7 +241,7 @@ static int32_t operand(uint32_t *state, int i)
 	if (i < n)
 		return edges[i];
 	/* Random bits shifted to a random size, with a random sign. */
-	return (int32_t)(next_random(state) >> (next_random(state) % 32u));
+	return (int32_t)(test_random_bits() >> (test_random_bits() % 32u));
 }
 
 /* a * 65536 / b rounded to nearest, halves away from zero, in plain 64-bit arithmetic. */
@@ -266,11 +256,11 @@ static int64_t reference_round_div(int32_t a, int32_t b)
  * same image. Checked on every build, whichever form its fixed_mul uses. */
 static void test_narrow_kernels(void)
 {
-	uint32_t state = 12345u;
 	int i, j, mismatches = 0, checked = 0;
+	test_seed(12345);
 	for (i = 0; i < 400; i++) {
 		for (j = 0; j < 16; j++) {
-			int32_t a = operand(&state, i), b = operand(&state, j + (i < 16 ? 0 : 16));
+			int32_t a = operand(i), b = operand(j + (i < 16 ? 0 : 16));
 			uint32_t d = (uint32_t)b == 0 ? 1u : (b < 0 ? 0u - (uint32_t)b : (uint32_t)b);
 			uint64_t n = ((uint64_t)(uint32_t)a << 16) | (uint32_t)b;
 			uint64_t q = n / d;
@@ -336,10 +326,10 @@ static void test_narrow_kernels(void)
 		 * d - 1: n = q d + r, which the division must give back. */
 		int wrong = 0;
 		for (i = 0; i < 100000; i++) {
-			uint32_t d = next_random(&state) >> (next_random(&state) % 32u);
-			uint32_t q = next_random(&state) >> (next_random(&state) % 32u), r;
+			uint32_t d = test_random_bits() >> (test_random_bits() % 32u);
+			uint32_t q = test_random_bits() >> (test_random_bits() % 32u), r;
 			d = d ? d : 1u;
-			r = i % 3 == 0 ? 0u : i % 3 == 1 ? d - 1 : next_random(&state) % d;
+			r = i % 3 == 0 ? 0u : i % 3 == 1 ? d - 1 : test_random_bits() % d;
 			if (fixed_udiv_narrow((uint64_t)q * d + r, d) != q ||
 			    fixed_udiv((uint64_t)q * d + r, d) != q)
 				wrong++;

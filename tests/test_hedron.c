@@ -194,17 +194,8 @@ static void test_bad_direction(const object *o)
 
 /* ---- watertightness ------------------------------------------------------------ */
 
-static unsigned long long lcg_state;
-
-/* Knuth's MMIX LCG; the top 53 bits as a double in [0, 1). */
-static double rnd(void)
-{
-	lcg_state = lcg_state * 6364136223846793005ULL + 1442695040888963407ULL;
-	return (double)(lcg_state >> 11) * (1.0 / 9007199254740992.0);
-}
-
-static double rnd_range(double lo, double hi) { return lo + (hi - lo) * rnd(); }
-static double rnd_sign(void) { return rnd() < 0.5 ? -1.0 : 1.0; }
+/* -1 or 1, as likely (test.h's seeded generator). */
+static double rnd_sign(void) { return test_random() < 0.5 ? -1.0 : 1.0; }
 
 /* A point (moved) or a direction (only rotated) from cube to world coordinates. */
 static void to_world(const frame *f, const double local[3], double w[3], int is_point)
@@ -249,10 +240,10 @@ static ray ray_through(const double p[3], const double dir[3], double back)
 static void pick_boundary_point(int vertex, double local[3], double signs[3], int *free_axis)
 {
 	int i;
-	*free_axis = vertex ? -1 : (int)(rnd() * 3.0);
+	*free_axis = vertex ? -1 : (int)(test_random() * 3.0);
 	for (i = 0; i < 3; i++) {
 		signs[i] = i == *free_axis ? 0.0 : rnd_sign();
-		local[i] = i == *free_axis ? rnd_range(-0.95, 0.95) : signs[i];
+		local[i] = i == *free_axis ? test_random_range(-0.95, 0.95) : signs[i];
 	}
 }
 
@@ -286,13 +277,13 @@ static void watertight(const char *name, const frame *f)
 			pick_boundary_point(vertex, local, signs, &free_axis);
 			/* Aim at a random interior point: the exact answer is "hit". */
 			for (i = 0; i < 3; i++) {
-				target[i] = rnd_range(-0.9, 0.9);
+				target[i] = test_random_range(-0.9, 0.9);
 				dl[i] = target[i] - local[i];
 			}
 			to_world(f, local, p, 1);
 			to_world(f, dl, dir, 0);
 			normalize3(dir);
-			r = ray_through(p, dir, rnd_range(0.5, 10.0));
+			r = ray_through(p, dir, test_random_range(0.5, 10.0));
 			if (!hedron_intersect(&s, &o, &r, 0, REAL_MAX, &h)) {
 				leaks++;
 				continue;
@@ -328,7 +319,7 @@ static void watertight(const char *name, const frame *f)
 			for (i = 0; i < 3; i++) {
 				away[i] = signs[i] / len;
 				local[i] += 1e-3 * away[i];
-				along[i] = rnd_range(-1.0, 1.0);
+				along[i] = test_random_range(-1.0, 1.0);
 				dot += along[i] * away[i];
 			}
 			/* Remove the component along `away`: a random direction in the plane. */
@@ -337,7 +328,7 @@ static void watertight(const char *name, const frame *f)
 			to_world(f, local, p, 1);
 			to_world(f, along, dir, 0);
 			normalize3(dir);
-			r = ray_through(p, dir, rnd_range(0.5, 10.0));
+			r = ray_through(p, dir, test_random_range(0.5, 10.0));
 			false_hits += hedron_intersect(&s, &o, &r, 0, REAL_MAX, NULL);
 		}
 	}
@@ -377,7 +368,7 @@ void suite_hedron(void)
 		run_case(&o, &cases[i]);
 	test_bad_direction(&o);
 
-	lcg_state = 20240601u;
+	test_seed(20240601u);
 	watertight("axis-aligned cube", &unit_cube);
 	rotation(0.3, 0.7, 1.1, turned.rot);
 	turned.move[0] = turned.move[1] = turned.move[2] = 0.0;

@@ -135,11 +135,9 @@ static void test_png_arena(void)
 	/* The bound holds for incompressible pixels, the encoder's worst case. */
 	{
 		static unsigned char noise[160 * 120 * 3];
-		unsigned seed = 1;
-		for (i = 0; i < sizeof noise; i++) {
-			seed = seed * 1103515245u + 12345u;
-			noise[i] = (unsigned char)(seed >> 16);
-		}
+		test_seed(1);
+		for (i = 0; i < sizeof noise; i++)
+			noise[i] = (unsigned char)(test_random_bits() >> 24);
 		captured_length = 0;
 		CHECK_INT(png_write(noise, 160, 120, discard, NULL, arena, sizeof arena), 1);
 		CHECK(png_arena_peak() <= png_arena_needed(160, 120));

@@ -279,15 +279,6 @@ static void test_collinear(void)
 
 /* ---- G11: random points on shared edges of a grid --------------------------------- */
 
-static unsigned long long lcg_state;
-
-/* Knuth's MMIX LCG; the top 53 bits as a double in [0, 1). */
-static double rnd(void)
-{
-	lcg_state = lcg_state * 6364136223846793005ULL + 1442695040888963407ULL;
-	return (double)(lcg_state >> 11) * (1.0 / 9007199254740992.0);
-}
-
 enum { CELLS = 8, MAX_EDGES = 4 * CELLS * CELLS };
 
 /* A jittered lattice cut into quads and triangles: the plane tiled without gaps. */
@@ -343,13 +334,13 @@ static void build_grid(grid *g, place_fn place, vec3 normal, real offset, int ax
 	for (i = 0; i <= CELLS; i++)
 		for (j = 0; j <= CELLS; j++) {
 			/* Jitter of at most 0.2 keeps every cell simple and the cells a tiling. */
-			g->uv[i][j][0] = i + 0.4 * (rnd() - 0.5);
-			g->uv[i][j][1] = j + 0.4 * (rnd() - 0.5);
+			g->uv[i][j][0] = i + 0.4 * (test_random() - 0.5);
+			g->uv[i][j][1] = j + 0.4 * (test_random() - 0.5);
 		}
 	for (i = 0; i < CELLS; i++)
 		for (j = 0; j < CELLS; j++) {
 			const double *q[4];
-			double pick = rnd();
+			double pick = test_random();
 			q[0] = g->uv[i][j];
 			q[1] = g->uv[i + 1][j];
 			q[2] = g->uv[i + 1][j + 1];
@@ -381,13 +372,14 @@ static void build_grid(grid *g, place_fn place, vec3 normal, real offset, int ax
 /* A random point on a random shared edge (1 in 8: an interior lattice vertex exactly). */
 static void pick_on_edge(const grid *g, double uv[2])
 {
-	if (rnd() < 0.125) {
-		int i = 1 + (int)(rnd() * (CELLS - 1)), j = 1 + (int)(rnd() * (CELLS - 1));
+	if (test_random() < 0.125) {
+		int i = 1 + (int)(test_random() * (CELLS - 1));
+		int j = 1 + (int)(test_random() * (CELLS - 1));
 		uv[0] = g->uv[i][j][0];
 		uv[1] = g->uv[i][j][1];
 	} else {
-		const double(*e)[2] = g->edge[(int)(rnd() * g->edges)];
-		double t = rnd();
+		const double(*e)[2] = g->edge[(int)(test_random() * g->edges)];
+		double t = test_random();
 		/* A point that close to the end of an edge on the grid's border could land
 		 * outside the grid once rounded (in Q16.16 a ray's origin and direction are off
 		 * by an LSB or so, far from the origin). Points stay 5 % of an edge from its
@@ -443,7 +435,7 @@ static void test_grid(void)
 	real offset;
 	int neither = 0, both = 0, n_ray_neither = 0, n_ray_both = 0, wrong_t = 0, k, i;
 
-	lcg_state = 1618033988u;
+	test_seed(1618033988u);
 	/* The flat grid spans 0 .. 8. */
 	grid_shift = test_shift(CELLS + 0.5);
 	build_grid(&g, place_flat, VEC_C(0, 0, 1), 0, 2);
@@ -480,7 +472,7 @@ static void test_grid(void)
 	CHECK(fabs(normal[0]) > fabs(normal[1]) && fabs(normal[0]) > fabs(normal[2]));
 	build_grid(&g, place_tilted, n, offset, 0);
 	for (k = 0; k < POINTS; k++) {
-		double uv[2], p[3], w[3], cosine, back = 1.0 + 19.0 * rnd();
+		double uv[2], p[3], w[3], cosine, back = 1.0 + 19.0 * test_random();
 		int count = 0;
 		ray r;
 		hit h;
@@ -489,7 +481,7 @@ static void test_grid(void)
 		/* A random direction on the front side, not grazing (cos >= 0.2). */
 		do {
 			for (i = 0; i < 3; i++)
-				w[i] = 2.0 * rnd() - 1.0;
+				w[i] = 2.0 * test_random() - 1.0;
 			len = sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
 			cosine = w[0] * normal[0] + w[1] * normal[1] + w[2] * normal[2];
 			cosine = len > 0.0 ? cosine / len : 0.0;

@@ -15,18 +15,7 @@
 /* Several megabytes: static, never on the stack. */
 static scene s;
 
-/* ---- random numbers and small double-precision helpers --------------------------- */
-
-static unsigned long long lcg_state;
-
-/* Knuth's MMIX LCG; the top 53 bits as a double in [0, 1). */
-static double rnd(void)
-{
-	lcg_state = lcg_state * 6364136223846793005ULL + 1442695040888963407ULL;
-	return (double)(lcg_state >> 11) * (1.0 / 9007199254740992.0);
-}
-
-static double rnd_range(double lo, double hi) { return lo + (hi - lo) * rnd(); }
+/* ---- random vectors and small double-precision helpers ------------------------------ */
 
 static double dot3(const double a[3], const double b[3])
 {
@@ -38,9 +27,9 @@ static void rnd_unit(double v[3])
 {
 	double len2;
 	do {
-		v[0] = rnd_range(-1.0, 1.0);
-		v[1] = rnd_range(-1.0, 1.0);
-		v[2] = rnd_range(-1.0, 1.0);
+		v[0] = test_random_range(-1.0, 1.0);
+		v[1] = test_random_range(-1.0, 1.0);
+		v[2] = test_random_range(-1.0, 1.0);
 		len2 = dot3(v, v);
 	} while (len2 > 1.0 || len2 < 1e-6);
 	len2 = sqrt(len2);
@@ -216,21 +205,21 @@ static void self_hit_sphere(const sphere_setup *setup)
 		hit h;
 		if (setup->room) {
 			/* smallpt's room in front of the wall at x = 1; aim just past it. */
-			o[0] = rnd_range(2.0, 98.0);
-			o[1] = rnd_range(2.0, 80.0);
-			o[2] = rnd_range(2.0, 170.0);
+			o[0] = test_random_range(2.0, 98.0);
+			o[1] = test_random_range(2.0, 80.0);
+			o[2] = test_random_range(2.0, 170.0);
 			target[0] = 0.5;
-			target[1] = rnd_range(0.0, 81.6);
-			target[2] = rnd_range(0.0, 170.0);
+			target[1] = test_random_range(0.0, 81.6);
+			target[2] = test_random_range(0.0, 170.0);
 		} else {
 			/* From 1.5 to 4 radii away, at a point inside the sphere. */
-			double u[3], dist = setup->radius * rnd_range(1.5, 4.0);
+			double u[3], dist = setup->radius * test_random_range(1.5, 4.0);
 			rnd_unit(u);
 			for (k = 0; k < 3; k++)
 				o[k] = setup->center[k] + dist * u[k];
 			rnd_unit(u);
 			for (k = 0; k < 3; k++)
-				target[k] = setup->center[k] + 0.95 * setup->radius * rnd() * u[k];
+				target[k] = setup->center[k] + 0.95 * setup->radius * test_random() * u[k];
 		}
 		for (k = 0; k < 3; k++)
 			d[k] = target[k] - o[k];
@@ -371,13 +360,13 @@ static void self_hit_hedron(const char *name, const frame *f)
 	add_cube(f);
 	for (n = 0; n < RAYS; n++) {
 		double local[3], p[3], outside[3], w[3], o[3], normal[3];
-		double back = rnd_range(0.5, 5.0);
-		int axis = (int)(rnd() * 3.0), i;
+		double back = test_random_range(0.5, 5.0);
+		int axis = (int)(test_random() * 3.0), i;
 		ray r;
 		hit h;
 		for (i = 0; i < 3; i++)
-			local[i] = rnd_range(-0.9, 0.9);
-		local[axis] = rnd() < 0.5 ? -1.0 : 1.0;
+			local[i] = test_random_range(-0.9, 0.9);
+		local[axis] = test_random() < 0.5 ? -1.0 : 1.0;
 		outside[0] = outside[1] = outside[2] = 0.0;
 		outside[axis] = local[axis];
 		to_world(f, local, p, 1);
@@ -497,8 +486,8 @@ static void self_hit_polygon(const char *name, const double origin[3], unsigned 
 	s.vertex_count = 0;
 	add_square(origin, e1, e2, 4.0, flags);
 	for (n = 0; n < RAYS; n++) {
-		double p[3], w[3], o[3], normal[3], back = rnd_range(0.5, 20.0);
-		double a = rnd_range(0.1, 3.9), b = rnd_range(0.1, 3.9);
+		double p[3], w[3], o[3], normal[3], back = test_random_range(0.5, 20.0);
+		double a = test_random_range(0.1, 3.9), b = test_random_range(0.1, 3.9);
 		ray r;
 		hit h;
 		from_dir(s.objects[0].u.polygon.normal, normal);
@@ -603,8 +592,8 @@ static void build_fixture(fixture *fx)
 	s.plane_count = 0;
 	for (i = 0; i <= CELLS; i++)
 		for (j = 0; j <= CELLS; j++) {
-			fx->uv[i][j][0] = i + 0.4 * (rnd() - 0.5);
-			fx->uv[i][j][1] = j + 0.4 * (rnd() - 0.5);
+			fx->uv[i][j][0] = i + 0.4 * (test_random() - 0.5);
+			fx->uv[i][j][1] = j + 0.4 * (test_random() - 0.5);
 		}
 	/* Each cell as two opaque (one-sided) triangles, along alternating diagonals. */
 	for (i = 0; i < CELLS; i++)
@@ -647,9 +636,9 @@ static void fall_through(const char *name, fixture *fx)
 	char what[96];
 
 	for (n = 0; n < RAYS; n++) {
-		double uv[2], p[3], w[3], o[3], back = rnd_range(1.0, 10.0);
-		int i = 1 + (int)(rnd() * (CELLS - 1)), j = 1 + (int)(rnd() * (CELLS - 1)), k;
-		double pick = rnd(), t = rnd();
+		double uv[2], p[3], w[3], o[3], back = test_random_range(1.0, 10.0);
+		int i = 1 + (int)(test_random() * (CELLS - 1)), j = 1 + (int)(test_random() * (CELLS - 1)), k;
+		double pick = test_random(), t = test_random();
 		ray r;
 		hit h;
 		/* An interior vertex, a point on one of its edges to the right or above, or on
@@ -688,16 +677,16 @@ static void fall_through(const char *name, fixture *fx)
 			wrong++;
 	}
 	for (n = 0; n < RAYS; n++) {
-		double local[3], target[3], dl[3], p[3], dir[3], o[3], back = rnd_range(0.5, 10.0);
-		int vertex = rnd() < 0.5, free_axis = vertex ? -1 : (int)(rnd() * 3.0), k;
+		double local[3], target[3], dl[3], p[3], dir[3], o[3], back = test_random_range(0.5, 10.0);
+		int vertex = test_random() < 0.5, free_axis = vertex ? -1 : (int)(test_random() * 3.0), k;
 		ray r;
 		hit h;
 		for (k = 0; k < 3; k++) {
 			if (k == free_axis)
-				local[k] = rnd_range(-0.95, 0.95);
+				local[k] = test_random_range(-0.95, 0.95);
 			else
-				local[k] = rnd() < 0.5 ? -1.0 : 1.0;
-			target[k] = rnd_range(-0.9, 0.9);
+				local[k] = test_random() < 0.5 ? -1.0 : 1.0;
+			target[k] = test_random_range(-0.9, 0.9);
 			dl[k] = target[k] - local[k];
 		}
 		to_world(&fx->cube_frame, local, p, 1);
@@ -762,8 +751,8 @@ static void energy(void)
 		out_of_range += !(r >= REAL_C(0.0) && r <= REAL_C(1.0));
 	}
 	for (a = 0; a < 2000; a++) {
-		real pass = optics_beer(test_real(rnd_range(0.0, 10.0)),
-					test_real(rnd_range(-5.0, 50.0)));
+		real pass = optics_beer(test_real(test_random_range(0.0, 10.0)),
+					test_real(test_random_range(-5.0, 50.0)));
 		beer_bad += !(pass >= REAL_C(0.0) && pass <= REAL_C(1.0));
 	}
 	CHECK_INT(out_of_range, 0);
@@ -809,7 +798,7 @@ void suite_properties(void)
 	frame f;
 	size_t i;
 
-	lcg_state = 314159265u;
+	test_seed(314159265u);
 	for (i = 0; i < sizeof spheres / sizeof spheres[0]; i++)
 		self_hit_sphere(&spheres[i]);
 	rotation(0.3, 0.7, 1.1, &f);

@@ -338,15 +338,6 @@ static void test_range_refusals(void)
 }
 
 #if REAL_FIXED
-static unsigned long long coarse_state = 12345;
-
-/* A uniform double in [lo, hi) (Knuth's MMIX LCG). */
-static double coarse_rnd(double lo, double hi)
-{
-	coarse_state = coarse_state * 6364136223846793005ULL + 1442695040888963407ULL;
-	return lo + (hi - lo) * ((double)(coarse_state >> 11) * (1.0 / 9007199254740992.0));
-}
-
 /* sphere_coarse_miss may say "miss" only where the exact clear-miss tests (those floating
  * point makes) would: over random spheres of every size in the scaled range and rays that
  * pass them at random distances, many of them within a few units of the tangent. And it
@@ -354,10 +345,11 @@ static double coarse_rnd(double lo, double hi)
 static void test_coarse_miss(void)
 {
 	int i, wrong = 0, clear = 0, settled = 0, settled_from_f = 0;
+	test_seed(12345);
 	/* Counted over the rays from anywhere that pass at random distances, not those near
 	 * the tangent or from just outside the sphere. */
 	for (i = 0; i < 200000; i++) {
-		double radius = exp(coarse_rnd(0.0, 7.6)); /* 1 to 2000 units */
+		double radius = exp(test_random_range(0.0, 7.6)); /* 1 to 2000 units */
 		double c[3], o[3], p[3], u[3], len = 0.0, pass;
 		int j;
 		object sp;
@@ -367,16 +359,16 @@ static void test_coarse_miss(void)
 		real b;
 		int exact, coarse_f, coarse_c;
 		for (j = 0; j < 3; j++) {
-			c[j] = coarse_rnd(-3000.0, 3000.0);
-			o[j] = coarse_rnd(-4000.0, 4000.0);
-			u[j] = coarse_rnd(-1.0, 1.0);
+			c[j] = test_random_range(-3000.0, 3000.0);
+			o[j] = test_random_range(-4000.0, 4000.0);
+			u[j] = test_random_range(-1.0, 1.0);
 		}
 		/* A quarter of the origins lie just outside the sphere, where c is a few units
 		 * (a shadow ray leaving a small sphere). */
 		if (i % 4 >= 2) {
-			double v[3], vl = 0.0, at = radius + coarse_rnd(0.0, 4.0);
+			double v[3], vl = 0.0, at = radius + test_random_range(0.0, 4.0);
 			for (j = 0; j < 3; j++) {
-				v[j] = coarse_rnd(-1.0, 1.0);
+				v[j] = test_random_range(-1.0, 1.0);
 				vl += v[j] * v[j];
 			}
 			vl = sqrt(vl);
@@ -388,7 +380,7 @@ static void test_coarse_miss(void)
 		for (j = 0; j < 3; j++)
 			len += u[j] * u[j];
 		len = sqrt(len);
-		pass = coarse_rnd(-radius, 4.0 * radius);
+		pass = test_random_range(-radius, 4.0 * radius);
 		if (i & 1) {
 			/* Half of the rays pass where the exact test's answer changes, within a
 			 * few units (b^2 - c changes by 2|b| per unit there): perpendicular
@@ -399,7 +391,7 @@ static void test_coarse_miss(void)
 				f2 += fc[j] * fc[j];
 			}
 			perp = sqrt(radius * radius + (f2 - radius * radius) / 1024.0) +
-			       coarse_rnd(-12.0, 12.0);
+			       test_random_range(-12.0, 12.0);
 			if (f2 <= radius * radius || perp * perp >= f2)
 				continue;
 			/* w: u made perpendicular to the centre's direction. */

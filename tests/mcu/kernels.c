@@ -10,6 +10,7 @@
 #include "test.h"
 
 int test_passed, test_failed;
+unsigned long long test_random_state;
 
 /* Standard error, opened once (as src/mcu/semihost_io.c does for rt). */
 static void say(const char *text)
