@@ -15,7 +15,7 @@ int test_check(int cond, const char *file, int line, const char *what)
 		return 1;
 	}
 	test_failed++;
-	printf("%s:%d: check failed: %s\n", file, line, what);
+	printf("%s:%d: %s: expected true, got false\n", file, line, what);
 	return 0;
 }
 
@@ -33,14 +33,54 @@ int test_check_near(double actual, double expected, double tolerance, const char
 	return 0;
 }
 
-int test_check_int(long actual, long expected, const char *file, int line, const char *what)
+int test_check_int(long long actual, long long expected, const char *file, int line,
+		   const char *what)
 {
 	if (actual == expected) {
 		test_passed++;
 		return 1;
 	}
 	test_failed++;
-	printf("%s:%d: %s: expected %ld, got %ld\n", file, line, what, expected, actual);
+	printf("%s:%d: %s: expected %lld, got %lld\n", file, line, what, expected, actual);
+	return 0;
+}
+
+/* A string as a C literal: quoted, with escapes for quotes, backslashes and every byte
+ * outside printable ASCII (messages end in newlines; previews hold escape sequences). */
+static void print_quoted(const char *s)
+{
+	if (!s) {
+		fputs("NULL", stdout);
+		return;
+	}
+	putchar('"');
+	for (; *s; s++) {
+		unsigned char c = (unsigned char)*s;
+		if (c == '\n')
+			fputs("\\n", stdout);
+		else if (c == '"' || c == '\\')
+			printf("\\%c", c);
+		else if (c < 32 || c > 126)
+			printf("\\x%02X", c);
+		else
+			putchar(c);
+	}
+	putchar('"');
+}
+
+int test_check_str(const char *actual, const char *expected, const char *file, int line,
+		   const char *what)
+{
+	if (actual && expected && strcmp(actual, expected) == 0) {
+		test_passed++;
+		return 1;
+	}
+	test_failed++;
+	printf("%s:%d: %s: expected ", file, line, what);
+	print_quoted(expected);
+	fputs(", got ", stdout);
+	print_quoted(actual);
+	putchar('\n');
 	return 0;
 }
 

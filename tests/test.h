@@ -1,5 +1,5 @@
 /* test.h - rt's tiny test harness: checks that say what failed, counted per run.
- * A failed check prints `file:line: expected X, got Y` and the run goes on.
+ * A failed check prints `file:line: what: expected X, got Y` and the run goes on.
  * See LICENSE for copyright and licence. */
 #ifndef RT_TEST_H
 #define RT_TEST_H
@@ -12,18 +12,27 @@
 
 extern int test_passed, test_failed;
 
-/* Records one check; returns cond so a test can stop early on a failed precondition. */
+/* Records one check; returns whether it passed, so a test can stop early on a failed
+ * precondition. A failure prints `file:line: what: expected X, got Y`: for a condition
+ * `expected true, got false`, otherwise both values. */
 int test_check(int cond, const char *file, int line, const char *what);
 int test_check_near(double actual, double expected, double tolerance, const char *file,
 		    int line, const char *what);
-int test_check_int(long actual, long expected, const char *file, int line, const char *what);
+int test_check_int(long long actual, long long expected, const char *file, int line,
+		   const char *what);
+int test_check_str(const char *actual, const char *expected, const char *file, int line,
+		   const char *what);
 
 #define CHECK(cond) test_check((cond) != 0, __FILE__, __LINE__, #cond)
 #define CHECK_NEAR(actual, expected, tol)                                                     \
 	test_check_near((double)(actual), (double)(expected), (double)(tol), __FILE__, __LINE__, \
 			#actual)
+/* Integers compare as long long: 64-bit values whole, also where long has 32 bits. */
 #define CHECK_INT(actual, expected)                                                           \
-	test_check_int((long)(actual), (long)(expected), __FILE__, __LINE__, #actual)
+	test_check_int((long long)(actual), (long long)(expected), __FILE__, __LINE__, #actual)
+/* Strings compare byte for byte (NULL is no string, and fails). Not on the MCU. */
+#define CHECK_STR(actual, expected)                                                           \
+	test_check_str((actual), (expected), __FILE__, __LINE__, #actual)
 
 /* Seeded random numbers, one generator for every suite: Knuth's MMIX linear congruential
  * generator (64-bit state), the same numbers on every machine and in every build. A test

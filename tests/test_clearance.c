@@ -84,7 +84,7 @@ static void test_lower_bounds(void)
 			 "l 5 -5 5\nf 1 1 1 1 0 0 0 1\n%s",
 			 shapes[k].nff);
 		if (!CHECK(test_parse_buffer(&s, shapes[k].name, text, NULL, NULL)) ||
-		    !CHECK(s.object_count == 1))
+		    !CHECK_INT(s.object_count, 1))
 			continue;
 		scale_of = test_scale(s.length_shift);
 		for (i = 0; i < 14; i++)

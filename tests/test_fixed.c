@@ -15,7 +15,7 @@ static void test_products(void)
 	/* Q01: 181^2 fits Q16.16, 182^2 does not; the 64-bit square (real2) holds both. */
 	CHECK_INT(fixed_mul(Q(181.0), Q(181.0)), Q(32761.0));
 	CHECK_INT(fixed_mul(Q(182.0), Q(182.0)), FIXED_MAX); /* saturates, never wraps */
-	CHECK((int64_t)Q(182.0) * Q(182.0) == (int64_t)33124 << 32);
+	CHECK_INT((int64_t)Q(182.0) * Q(182.0), (int64_t)33124 << 32);
 	/* Rounding to nearest: 0.5 LSB products round away, -0.5 LSB too. */
 	CHECK_INT(fixed_mul(1, 32768), 1);
 	CHECK_INT(fixed_mul(Q(-1.5), Q(2.0)), Q(-3.0));
@@ -30,7 +30,7 @@ static void test_products(void)
 	/* Q02: r = 1e-3 is 66 LSB; its square vanishes in Q16.16 but is 4356 in Q32.32. */
 	CHECK_INT(Q(0.001), 66);
 	CHECK_INT(fixed_mul(Q(0.001), Q(0.001)), 0);
-	CHECK((int64_t)Q(0.001) * Q(0.001) == 4356);
+	CHECK_INT((int64_t)Q(0.001) * Q(0.001), 4356);
 }
 
 /* fixed_reciprocal_sqrt2 by its definition: the table's start and three Newton steps,
@@ -79,16 +79,16 @@ static void test_roots(void)
 	CHECK_INT(fixed_sqrt(Q(4.0)), Q(2.0));
 	CHECK_INT(fixed_sqrt(0), 0);
 	CHECK_INT(fixed_sqrt(-5), 0);
-	CHECK(fixed_isqrt64((uint64_t)1 << 62) == (uint64_t)1 << 31);
-	CHECK(fixed_isqrt64(24) == 5); /* 4.899 rounds up */
-	CHECK(fixed_isqrt64(UINT64_MAX) == (uint64_t)1 << 32);
-	CHECK(fixed_isqrt64(((uint64_t)1 << 32) + 1) == (uint64_t)1 << 16);
-	CHECK(fixed_isqrt64((uint64_t)4294967295u * 4294967295u) == 4294967295u);
+	CHECK_INT(fixed_isqrt64((uint64_t)1 << 62), (uint64_t)1 << 31);
+	CHECK_INT(fixed_isqrt64(24), 5); /* 4.899 rounds up */
+	CHECK_INT(fixed_isqrt64(UINT64_MAX), (uint64_t)1 << 32);
+	CHECK_INT(fixed_isqrt64(((uint64_t)1 << 32) + 1), (uint64_t)1 << 16);
+	CHECK_INT(fixed_isqrt64((uint64_t)4294967295u * 4294967295u), 4294967295u);
 	/* Either side of 2^60, where the digit loop leaves 32-bit arithmetic. */
-	CHECK(fixed_isqrt64(((uint64_t)1 << 60) - 1) == (uint64_t)1 << 30);
-	CHECK(fixed_isqrt64((uint64_t)1073741823u * 1073741823u + 1073741823u) == 1073741823u);
-	CHECK(fixed_isqrt64((uint64_t)1 << 60) == (uint64_t)1 << 30);
-	CHECK(fixed_isqrt64(((uint64_t)1 << 60) + ((uint64_t)1 << 31)) == ((uint64_t)1 << 30) + 1);
+	CHECK_INT(fixed_isqrt64(((uint64_t)1 << 60) - 1), (uint64_t)1 << 30);
+	CHECK_INT(fixed_isqrt64((uint64_t)1073741823u * 1073741823u + 1073741823u), 1073741823u);
+	CHECK_INT(fixed_isqrt64((uint64_t)1 << 60), (uint64_t)1 << 30);
+	CHECK_INT(fixed_isqrt64(((uint64_t)1 << 60) + ((uint64_t)1 << 31)), ((uint64_t)1 << 30) + 1);
 	{
 		/* Against the exact rule, on seeded random numbers of every size: r is the
 		 * rounded root when (r - 1/2)^2 <= x < (r + 1/2)^2, i.e. r^2 - r < x <= r^2 + r. */
@@ -139,8 +139,9 @@ static void test_roots(void)
 				wrong++;
 		}
 		CHECK_INT(wrong, 0);
-		CHECK(fixed_reciprocal_sqrt2(INT64_MAX).scale == reference_reciprocal_sqrt2(INT64_MAX).scale);
-		CHECK(fixed_reciprocal_sqrt2(-1).scale == 0);
+		CHECK_INT(fixed_reciprocal_sqrt2(INT64_MAX).scale,
+			  reference_reciprocal_sqrt2(INT64_MAX).scale);
+		CHECK_INT(fixed_reciprocal_sqrt2(-1).scale, 0);
 	}
 	{
 		/* Seeded random vectors of every size: each component over the length within
@@ -337,11 +338,11 @@ static void test_narrow_kernels(void)
 		CHECK_INT(wrong, 0);
 	}
 	/* Division's saturation and rounding edges. */
-	CHECK(fixed_udiv_narrow((uint64_t)1 << 32, 1) == UINT32_MAX);
-	CHECK(fixed_udiv_narrow(((uint64_t)1 << 32) - 1, 1) == UINT32_MAX);
-	CHECK(fixed_udiv_narrow(UINT64_MAX, UINT32_MAX) == UINT32_MAX);
-	CHECK(fixed_udiv_narrow(UINT64_MAX - 1, UINT32_MAX) == UINT32_MAX);
-	CHECK(fixed_udiv_narrow(7, 2) == 3);
+	CHECK_INT(fixed_udiv_narrow((uint64_t)1 << 32, 1), UINT32_MAX);
+	CHECK_INT(fixed_udiv_narrow(((uint64_t)1 << 32) - 1, 1), UINT32_MAX);
+	CHECK_INT(fixed_udiv_narrow(UINT64_MAX, UINT32_MAX), UINT32_MAX);
+	CHECK_INT(fixed_udiv_narrow(UINT64_MAX - 1, UINT32_MAX), UINT32_MAX);
+	CHECK_INT(fixed_udiv_narrow(7, 2), 3);
 	/* Rounding a Q32.32 sum to Q16.16 saturates at +-INT32_MAX, never INT32_MIN. */
 	CHECK_INT(fixed_dot3_narrow(INT32_MIN, 0, 0, 65536, 0, 0), -INT32_MAX);
 	CHECK_INT(fixed_dot3_narrow(INT32_MIN + 1, 0, 0, 65536, 0, 0), -INT32_MAX);
@@ -362,10 +363,10 @@ static void test_narrow_kernels(void)
 	CHECK_INT(fixed_div(1, -65536), -1); /* a negative divisor rounds the same way */
 	CHECK_INT(fixed_div(3, -2 * 65536), -2);
 	/* scale2: w times a small factor, exactly, and saturation past 2^63. */
-	CHECK(fixed_scale2((int64_t)3 << 40, Q(0.5)) == (int64_t)3 << 39);
-	CHECK(fixed_scale2(-((int64_t)3 << 40), Q(0.5)) == -((int64_t)3 << 39));
-	CHECK(fixed_scale2((int64_t)1 << 62, Q(4.0)) == INT64_MAX);
-	CHECK(fixed_scale2(((int64_t)5 << 50) + 12345, 7) == (((int64_t)5 << 50) + 12345) / 65536 * 7);
+	CHECK_INT(fixed_scale2((int64_t)3 << 40, Q(0.5)), (int64_t)3 << 39);
+	CHECK_INT(fixed_scale2(-((int64_t)3 << 40), Q(0.5)), -((int64_t)3 << 39));
+	CHECK_INT(fixed_scale2((int64_t)1 << 62, Q(4.0)), INT64_MAX);
+	CHECK_INT(fixed_scale2(((int64_t)5 << 50) + 12345, 7), (((int64_t)5 << 50) + 12345) / 65536 * 7);
 }
 
 /* The integer kernels alone, which tests/mcu/kernels.c also runs on the microcontroller

@@ -70,9 +70,9 @@ static void test_byte_formula(void)
 			continue;
 		checked++;
 		if (colour_srgb_byte(test_real(x)) != (int)floor(v + 0.5) && bad++ == 0)
-			printf("%s:%d: colour_srgb_byte(%.17g) = %d, the formula gives %d\n",
-			       __FILE__, __LINE__, x, colour_srgb_byte(test_real(x)),
-			       (int)floor(v + 0.5));
+			printf("%s:%d: colour_srgb_byte(%.17g): expected %d (the formula), got %d\n",
+			       __FILE__, __LINE__, x, (int)floor(v + 0.5),
+			       colour_srgb_byte(test_real(x)));
 	}
 	CHECK_INT(bad, 0);
 	/* Q16.16 skips 12 % of the points (0.12 of each code). */
@@ -88,8 +88,9 @@ static void test_byte_monotonic(void)
 		double x = (double)n / 100000;
 		int code = colour_srgb_byte(test_real(x * fabs(x)));
 		if (code < previous && decreases++ == 0)
-			printf("%s:%d: colour_srgb_byte(%.17g) = %d, below %d for a smaller value\n",
-			       __FILE__, __LINE__, x * fabs(x), code, previous);
+			printf("%s:%d: colour_srgb_byte(%.17g): expected at least %d (a smaller "
+			       "value's), got %d\n",
+			       __FILE__, __LINE__, x * fabs(x), previous, code);
 		previous = code;
 		if (!seen[code]++)
 			distinct++;

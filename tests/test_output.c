@@ -49,13 +49,13 @@ static void test_ascii(void)
 	rows[0] = rows[1] = grey(REAL_C(0.0));
 	rows[2] = rows[3] = grey(REAL_C(1.0));
 	preview_rows(PREVIEW_ASCII, 5, rows, 4);
-	CHECK(strcmp(captured, "     \n@@@@@\n") == 0);
+	CHECK_STR(captured, "     \n@@@@@\n");
 	/* A cell averages its two halves: black over white is mid-grey, not an end. */
 	rows[0] = grey(REAL_C(0.0));
 	rows[1] = grey(REAL_C(1.0));
 	preview_rows(PREVIEW_ASCII, 3, rows, 2);
 	CHECK_INT(captured_length, 4);
-	CHECK(captured[0] == preview_ramp[127 * 10 / 256]);
+	CHECK_INT(captured[0], preview_ramp[127 * 10 / 256]);
 	/* 50% grey in sRGB (linear 0.214) sits mid-ramp. */
 	rows[0] = rows[1] = grey(REAL_C(0.214));
 	preview_rows(PREVIEW_ASCII, 2, rows, 2);
@@ -63,7 +63,7 @@ static void test_ascii(void)
 	/* An odd last row fills its cell alone. */
 	rows[0] = grey(REAL_C(1.0));
 	preview_rows(PREVIEW_ASCII, 2, rows, 1);
-	CHECK(strcmp(captured, "@@\n") == 0);
+	CHECK_STR(captured, "@@\n");
 	/* Never an escape or anything outside printable 7-bit ASCII. */
 	rows[0] = vec_make(REAL_C(1.0), REAL_C(0.0), REAL_C(0.5));
 	rows[1] = vec_make(REAL_C(0.0), REAL_C(0.3), REAL_C(0.9));
@@ -79,11 +79,11 @@ static void test_ansi(void)
 	rows[1] = vec_make(REAL_C(0.0), REAL_C(0.0), REAL_C(1.0));
 	/* 24-bit: colours once (they do not change along the line), three half blocks, reset. */
 	preview_rows(PREVIEW_ANSI_24, 3, rows, 2);
-	CHECK(strcmp(captured, "\033[38;2;255;0;0m\033[48;2;0;0;255m"
-			       "\xE2\x96\x80\xE2\x96\x80\xE2\x96\x80\033[0m\n") == 0);
+	CHECK_STR(captured, "\033[38;2;255;0;0m\033[48;2;0;0;255m"
+			    "\xE2\x96\x80\xE2\x96\x80\xE2\x96\x80\033[0m\n");
 	/* 256 colours: the palette's pure red (196) over pure blue (21). */
 	preview_rows(PREVIEW_ANSI_256, 2, rows, 2);
-	CHECK(strcmp(captured, "\033[38;5;196m\033[48;5;21m\xE2\x96\x80\xE2\x96\x80\033[0m\n") == 0);
+	CHECK_STR(captured, "\033[38;5;196m\033[48;5;21m\xE2\x96\x80\xE2\x96\x80\033[0m\n");
 	/* Greys map to the grey ramp: linear 0.214 is sRGB 127, nearest grey 128 = 244. */
 	rows[0] = rows[1] = grey(REAL_C(0.214));
 	preview_rows(PREVIEW_ANSI_256, 1, rows, 2);

@@ -285,8 +285,7 @@ static void test_sphere(void)
 
 	/* Radius 0 cannot be seen: a warning, and the object is skipped. */
 	CHECK_INT(PARSE(VIEW "s 0 0 0 0\ns 0 0 5 1\n"), 1);
-	CHECK(strcmp(messages, "rt: " FILE_NAME ":8: warning: sphere with radius 0; skipped\n") ==
-	      0);
+	CHECK_STR(messages, "rt: " FILE_NAME ":8: warning: sphere with radius 0; skipped\n");
 	CHECK_INT(sc.object_count, 1);
 	CHECK_VEC(sc.objects[0].u.sphere.center, 0, 0, 5);
 	CHECK_INT(sc.objects[0].line, 9);
@@ -345,8 +344,7 @@ static void test_polygon(void)
 
 	/* Zero area: a warning, skipped, and its vertices are not kept. */
 	CHECK_INT(PARSE(VIEW "p 3\n0 0 0\n1 1 1\n2 2 2\np 3\n0 0 0\n0 1 0\n0 0 1\n"), 1);
-	CHECK(strcmp(messages, "rt: " FILE_NAME ":8: warning: polygon with zero area; skipped\n") ==
-	      0);
+	CHECK_STR(messages, "rt: " FILE_NAME ":8: warning: polygon with zero area; skipped\n");
 	CHECK_INT(sc.object_count, 1);
 	CHECK_INT(sc.objects[0].u.polygon.first, 0);
 	CHECK_INT(sc.vertex_count, 3);
@@ -763,7 +761,7 @@ static void test_bad_bytes(void)
 	char text[512];
 	size_t n;
 	EXPECT_ERROR(VIEW "sphere 0 0 0 1\n", 8, "unknown command 'sphere'");
-	CHECK(strcmp(messages, "rt: " FILE_NAME ":8: unknown command 'sphere'\n") == 0);
+	CHECK_STR(messages, "rt: " FILE_NAME ":8: unknown command 'sphere'\n");
 	EXPECT_ERROR(VIEW "S 0 0 0 1\n", 8, "unknown command 'S'");
 	EXPECT_ERROR("0.5 0.5\n", 1, "unknown command '0.5'");
 

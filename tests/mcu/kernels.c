@@ -21,10 +21,27 @@ static void say(const char *text)
 	semihost_write(handle, text, strlen(text));
 }
 
-static void report(const char *file, int line, const char *what, long expected, long actual)
+/* v in decimal, written back from the end of digits[21]; returns where it begins (this
+ * libc's snprintf has no %lld). */
+static const char *decimal(long long v, char digits[21])
+{
+	unsigned long long u = v < 0 ? 0ULL - (unsigned long long)v : (unsigned long long)v;
+	char *d = digits + 20;
+	*d = '\0';
+	do {
+		*--d = (char)('0' + u % 10);
+		u /= 10;
+	} while (u);
+	if (v < 0)
+		*--d = '-';
+	return d;
+}
+
+static void report(const char *file, int line, const char *what, const char *expected,
+		   const char *actual)
 {
 	char message[160];
-	snprintf(message, sizeof message, "%s:%d: %s: expected %ld, got %ld\n", file, line, what,
+	snprintf(message, sizeof message, "%s:%d: %s: expected %s, got %s\n", file, line, what,
 		 expected, actual);
 	say(message);
 }
@@ -36,7 +53,7 @@ int test_check(int cond, const char *file, int line, const char *what)
 		return 1;
 	}
 	test_failed++;
-	report(file, line, what, 1, 0);
+	report(file, line, what, "true", "false");
 	return 0;
 }
 
@@ -50,14 +67,16 @@ int test_check_near(double actual, double expected, double tolerance, const char
 	return test_check(0, file, line, what);
 }
 
-int test_check_int(long actual, long expected, const char *file, int line, const char *what)
+int test_check_int(long long actual, long long expected, const char *file, int line,
+		   const char *what)
 {
+	char e[21], a[21];
 	if (actual == expected) {
 		test_passed++;
 		return 1;
 	}
 	test_failed++;
-	report(file, line, what, expected, actual);
+	report(file, line, what, decimal(expected, e), decimal(actual, a));
 	return 0;
 }
 
