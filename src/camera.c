@@ -46,7 +46,7 @@ const char *camera_init(camera *c, const view *v, int width, int height)
 		 * from its centre. Refused: past 4096 (a view of over 179.97 degrees on a square
 		 * image), where the eye rays' unnormalised directions would reach 2^13 and their
 		 * squared lengths crowd 64 bits (numbers beyond what this type holds, as
-		 * fixed_can_represent refuses scenes); and an angle below max(width, height) LSB
+		 * scale_can_represent refuses scenes); and an angle below max(width, height) LSB
 		 * (0.002 degrees at 129 pixels), whose own rounding (it is Q16.16 degrees, good to
 		 * half an LSB) moves the image's edge by more than a quarter of a pixel. */
 		int64_t reach = (int64_t)c->half_width * larger;

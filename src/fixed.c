@@ -429,39 +429,6 @@ int32_t fixed_ldexp(int32_t x, int e)
 	return (x >> 1) + (x & 1);
 }
 
-int fixed_length_shift(int32_t extent, int measured_shift)
-{
-	/* At most 4096 (2^12): squares, ray lengths across the scene and their sums keep
-	 * headroom in Q16.16 and Q32.32; at least 2048, to use the bits there are. */
-	int s = measured_shift;
-	int32_t e = extent > 0 ? extent : 1; /* doubled only while at most 2^27: 32 bits */
-	while (e > (int32_t)4096 * 65536) {
-		e >>= 1;
-		s--;
-	}
-	while (e <= (int32_t)2048 * 65536 && s < 16) {
-		e <<= 1;
-		s++;
-	}
-	return s;
-}
-
-int fixed_can_represent(int32_t extent, int32_t feature, const char **why)
-{
-	/* The smallest feature (a radius, a cone's length) must keep its square and stay
-	 * well above the hit point's error and the secondary-ray offset: at least 1/32768 of
-	 * the extent, 1/8 unit at full scale. Measured at 256x256 against the reference:
-	 * SPD shells (ratio 28,600) hits another object in 0.03 % of its pixels, SPD tree at
-	 * its default size (49,140) in 3.1 %. */
-	*why = NULL;
-	/* In 32 bits: from 65536 on, feature * 32768 is past any extent. */
-	if (feature > 0 && feature < 65536 && feature * 32768 < extent) {
-		*why = "the ratio of its extent to its smallest feature is over 32768";
-		return 0;
-	}
-	return 1;
-}
-
 void fixed_format(int32_t x, int shift, char *buf, size_t size)
 {
 	/* In units of 2^-16, times 2^-shift: as 64 bits (a shift of up to 24 either way). */

@@ -723,19 +723,12 @@ void fixed_sin_cos_half_angle(int32_t degrees, int32_t *sine, int32_t *cosine);
  * to 0, else 0. */
 int32_t fixed_parse(const char *s, const char **end, int shift, int *overflow);
 
-/* A whole token as Q16.16 times 2^shift: 0 ok, 1 not a number, 2 out of range. */
+/* A whole token as Q16.16 times 2^shift: REAL_TEXT_OK, _NOT_A_NUMBER, _NOT_FINITE,
+ * _OUT_OF_RANGE or _TINY (0 to 4, realtext.h). */
 int fixed_from_text(const char *text, int shift, int32_t *out);
 
 /* x times 2^e, saturating. */
 int32_t fixed_ldexp(int32_t x, int e);
-
-/* The length scale 2^shift that brings a scene whose extent (largest coordinate) was
- * measured at 2^measured_shift into Q16.16's comfortable range (2048 to 4096). */
-int fixed_length_shift(int32_t extent, int measured_shift);
-
-/* Can a scene of this extent and smallest feature (both after scaling) be rendered?
- * 0 and *why when its dynamic range is too large for Q16.16. */
-int fixed_can_represent(int32_t extent, int32_t feature, const char **why);
 
 /* Writes x / 2^shift as a decimal with 6 fraction digits into buf (at least 24 bytes):
  * a scaled length in the scene's own units, which may be beyond Q16.16's range. */

@@ -6,6 +6,7 @@
 
 #include "config.h"
 #include "diag.h"
+#include "realtext.h"
 #include "vec.h"
 
 /* Returns the next byte of the input, or -1 at its end. */

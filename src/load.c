@@ -4,11 +4,12 @@
  * See LICENSE for copyright and licence. */
 #include "load.h"
 
-#include <stdio.h>
-
 #include "clearance.h"
 #include "diag.h"
 #include "parse.h"
+#include "realtext.h"
+#include "scale.h"
+#include "tolerance.h"
 
 /* One whole pass over the source, from its start, at length scale 2^shift. */
 static int source_pass(scene *s, const char *name, const scene_source *source, int shift,
@@ -54,25 +55,25 @@ int load_scene_source(scene *s, const char *name, const scene_source *source)
 {
 	/* Floating point reads the file once. Fixed point reads it first to measure it (at
 	 * scale 1, which keeps small scenes' detail, or if a length does not fit there at
-	 * the coarse REAL_FIRST_PASS_SHIFT that holds any coordinate), then again at the
-	 * scale that fits its extent into Q16.16's range (real_length_shift). */
+	 * the coarse SCALE_FIRST_PASS_SHIFT that holds any coordinate), then again at the
+	 * scale that fits its extent into Q16.16's range (scale_length_shift). */
 	int final_shift;
 	real extent, feature;
 	const char *why;
 	/* Test the macro, not a variable holding it: the condition is fixed per build, which
 	 * static analysis reports about a variable ("always false"). */
-	if (REAL_FIRST_PASS_SHIFT != 0) {
+	if (SCALE_FIRST_PASS_SHIFT != 0) {
 		int shift = 0, ok, was_muted = diag_mute(1);
 		ok = source_pass(s, name, source, shift, 1);
 		if (!ok) {
-			shift = REAL_FIRST_PASS_SHIFT;
+			shift = SCALE_FIRST_PASS_SHIFT;
 			ok = source_pass(s, name, source, shift, 1);
 		}
 		diag_mute(was_muted);
 		if (!ok) /* again, to report the error */
 			return source_pass(s, name, source, shift, 0);
 		/* Every length read counts, also those of objects skipped at this scale. */
-		final_shift = real_length_shift(s->longest_length, shift);
+		final_shift = scale_length_shift(s->longest_length, shift);
 	} else {
 		final_shift = 0;
 	}
@@ -80,7 +81,7 @@ int load_scene_source(scene *s, const char *name, const scene_source *source)
 		return 0;
 	s->length_shift = final_shift;
 	scene_measure(s, &extent, &feature);
-	if (!real_can_represent(extent, feature, &why)) {
+	if (!scale_can_represent(extent, feature, &why)) {
 		char e[32], f[32];
 		real_format(extent, final_shift, e, sizeof e);
 		real_format(feature, final_shift, f, sizeof f);

@@ -5,7 +5,6 @@
  * See LICENSE for copyright and licence. */
 #include "parse.h"
 
-#include <stdio.h>
 #include <string.h>
 
 #include "colour.h"

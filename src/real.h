@@ -1,6 +1,8 @@
 /* real.h - the one place that chooses rt's number type `real`.
  * Everything numeric goes through the names defined here, so one source builds as
- * float, double (default), long double or Q16.16 fixed point (fixed.c).
+ * float, double (default), long double or Q16.16 fixed point (fixed.h). What the type
+ * means for rt's policies is beside it: tolerance.h (offsets, the horizon, rounding
+ * bounds, the range budget), realtext.h (numbers as text), scale.h (a scene's scale).
  * See LICENSE for copyright and licence. */
 #ifndef RT_REAL_H
 #define RT_REAL_H
@@ -11,12 +13,6 @@
 	!defined(RT_REAL_FIXED)
 #define RT_REAL_DOUBLE
 #endif
-
-#define REAL_TEXT_OK 0
-#define REAL_TEXT_NOT_A_NUMBER 1
-#define REAL_TEXT_NOT_FINITE 2   /* NaN, infinity, or too large for any type */
-#define REAL_TEXT_OUT_OF_RANGE 3 /* finite, but beyond what this build reads */
-#define REAL_TEXT_TINY 4 /* not zero, but read as 0: too small for this build */
 
 /* Smaller and larger of two numbers of any of the types below (a macro, for real, unit
  * and real2 alike). */
@@ -32,16 +28,12 @@
 #endif
 
 /* Operations whose meaning changes with the type are named; + - < stay plain.
- * REAL_C wraps every literal so tables compile in every build.
- * REAL_OFFSET is the relative size of the offset that moves a secondary ray's origin
- * off the surface (times max(1, |p|inf, t)): a few thousand ulps of the hit point,
- * well above the hit point's rounding error and well below any feature size. */
+ * REAL_C wraps every literal so tables compile in every build. */
 #if defined(RT_REAL_FLOAT)
 typedef float real;
 #define REAL_NAME "float"
 #define REAL_C(x) ((float)(x))
 #define REAL_MAX FLT_MAX
-#define REAL_OFFSET REAL_C(6.103515625e-05) /* 2^-14 = 512 ulp */
 #define real_sqrt sqrtf
 #define real_fabs fabsf
 #define real_pow powf
@@ -56,7 +48,6 @@ typedef double real;
 #define REAL_NAME "double"
 #define REAL_C(x) ((double)(x))
 #define REAL_MAX DBL_MAX
-#define REAL_OFFSET REAL_C(9.313225746154785e-10) /* 2^-30 = 2^22 ulp */
 #define real_sqrt sqrt
 #define real_fabs fabs
 #define real_pow pow
@@ -70,7 +61,6 @@ typedef long double real;
 #define REAL_NAME "long double"
 #define REAL_C(x) ((long double)(x))
 #define REAL_MAX LDBL_MAX
-#define REAL_OFFSET REAL_C(9.094947017729282e-13) /* 2^-40 = 2^23 ulp */
 #define real_sqrt sqrtl
 #define real_fabs fabsl
 #define real_pow powl
@@ -124,16 +114,6 @@ typedef fixed_reciprocal real_reciprocal;
  * division), and the length from it. */
 #define real2_reciprocal_sqrt(w) fixed_reciprocal_sqrt2(w)
 #define real2_sqrt_by(w, r) fixed_sqrt_by_reciprocal((w), (r))
-/* How far b^2 - w can be off through rounding, for b a rounded dot product (half an LSB:
- * b^2 off by |b| in Q32.32) and w a real2 scaled by a near-one factor (real2_scale
- * truncates: off by |w| / 2^16), with room to spare: errors here are absolute. */
-#define real2_error_bound(b, w) \
-	((real2)fixed_abs(b) + (real2)(((w) < 0 ? 0u - (uint64_t)(w) : (uint64_t)(w)) >> 16) + \
-	 (real2)131072)
-/* How far w > 0 moves when scaled by the squared length of a unit direction (within
- * 2^-10 of 1, far more than rounding leaves it off): 2^-10 of w, a shift (w / 1024 for
- * w > 0, without a signed division's correction). */
-#define real2_unit_slack(w) ((w) >> 10)
 /* Unit-length quantities (direction and normal components, cosines) are Q2.30, 1.0 =
  * 2^30: a normalised direction is good to a few 2^-30, where Q16.16 kept 2^-17, and
  * a dot product with it no longer rounds to Q16.16's step. A product with a unit keeps
@@ -158,87 +138,14 @@ typedef int32_t unit;
 /* d's reciprocal for quotients x / d that are units, |x| <= |d| (the components of a
  * vector over its length), through real_times_reciprocal. */
 #define unit_reciprocal(r) fixed_unit_reciprocal(r)
-/* Beyond any scaled scene's coordinates (4096): an infinite plane is seen out to six
- * times the scene's extent. Hit points out there are within range (4096 + 24000), and
- * the vector arithmetic from them saturates (real_add) rather than overflows. */
-#define REAL_FAR REAL_C(24000.0)
-/* Absolute precision: a hit point is good to a couple of LSB wherever it is. */
-/* The offset grows with the ray's scale. Directions, normals and their dot products are
- * Q2.30 (unit, above), so a hit point is good to a few LSB plus about 2^-18 of the ray's
- * scale, and secondary rays leave it by 8 LSB + 2^-16 of the scale. The cone's quadratic
- * still rounds to Q16.16: a cone's hit (hit.rough) needs 16 LSB + 2^-13, which is also
- * the bound the BVH pads boxes by. Measured against the reference at 160x120 (pixels off
- * by more than 2 levels), the finer offset for all but cones: polyhedron.nff 0.031 % -> 0,
- * hard/cube-diagonal 0.062 % -> 0, glass.nff 0.130 -> 0.062 %, polygons.nff 0.026 ->
- * 0.005 %; 4 LSB + 2^-18 breaks glass.nff (19.7 %); the finer offset on cones too triples
- * the dark speckles on cones.nff (1,350 -> 4,093 of 65,536 at 256x256). */
-#define real_surface_offset(scale, rough) \
-	((rough) ? (real)16 + ((scale) >> 13) : (real)8 + ((scale) >> 16))
-/* An eye or a light nearer a surface than 2^REAL_CLEARANCE_BITS steps may round onto it or
- * through it. */
-#define REAL_CLEARANCE_BITS 2
-#define REAL_CLEARANCE_MIN ((real)1 << REAL_CLEARANCE_BITS)
-#define real_from_text(text, shift, out) fixed_from_text((text), (shift), (out))
-#define REAL_RANGE_TEXT "the range of Q16.16 fixed point"
-#define real_format(x, shift, buf, size) fixed_format((x), (shift), (buf), (size))
 #define real_ldexp(x, e) fixed_ldexp((x), (e))
-/* Pass 1 reads lengths at 2^-12 (up to 1.3e8 units) to find the scene's extent. */
-#define REAL_FIRST_PASS_SHIFT (-12)
-#define real_length_shift(extent, shift) fixed_length_shift((extent), (shift))
-#define real_can_represent(extent, feature, why) fixed_can_represent((extent), (feature), (why))
 #else
 #error "rt: choose one of RT_REAL_FLOAT, RT_REAL_DOUBLE, RT_REAL_LONG_DOUBLE, RT_REAL_FIXED"
 #endif
 
 #if !defined(RT_REAL_FIXED)
 typedef real real2; /* floating point needs no wider type for squares */
-#define REAL_INPUT_LIMIT REAL_C(1e12)
-#define REAL_FAR REAL_C(1e15) /* a length beyond any scene's coordinates */
 #define real_ldexp(x, e) real_ldexp_((x), (e))
-#define real_surface_offset(scale, rough) ((void)(rough), real_mul(REAL_OFFSET, (scale)))
-/* Floating point places any point off a surface. */
-#define REAL_CLEARANCE_BITS 0
-#define REAL_CLEARANCE_MIN REAL_C(0.0)
-/* Reading numbers: real_from_text converts a whole token, times 2^shift (the scene's
- * length scale, always 0 in floating point), and returns a REAL_TEXT_ status. */
-static inline int real_from_text(const char *text, int shift, real *out)
-{
-	char *end;
-	const char *c;
-	(void)shift;
-	/* NFF numbers are decimal: C's hexadecimal floats (0x1p3) are no number here, as
-	 * in fixed point, so every build reads a scene alike. */
-	for (c = text; *c; c++)
-		if (*c == 'x' || *c == 'X')
-			return REAL_TEXT_NOT_A_NUMBER;
-	*out = real_parse(text, &end);
-	if (end == text || *end != '\0')
-		return REAL_TEXT_NOT_A_NUMBER;
-	if (!real_isfinite(*out))
-		return REAL_TEXT_NOT_FINITE;
-	if (*out == REAL_C(0.0)) {
-		/* Underflow: a digit 1 to 9 before any exponent. */
-		for (c = text; *c && *c != 'e' && *c != 'E'; c++)
-			if (*c >= '1' && *c <= '9')
-				return REAL_TEXT_TINY;
-	}
-	return real_fabs(*out) <= REAL_INPUT_LIMIT ? REAL_TEXT_OK : REAL_TEXT_OUT_OF_RANGE;
-}
-#define REAL_RANGE_TEXT "+-1e12"
-/* Writes x / 2^shift in decimal (shift is always 0 here). */
-#define real_format(x, shift, buf, size) \
-	((void)(shift), (void)snprintf((buf), (size), "%g", (double)(x)))
-/* Floating point represents any scene within the input limit: no scaling (shift 0),
- * and nothing is refused for its dynamic range. */
-#define REAL_FIRST_PASS_SHIFT 0
-#define real_length_shift(extent, shift) ((void)(extent), (void)(shift), 0)
-static inline int real_can_represent(real extent, real feature, const char **why)
-{
-	(void)extent;
-	(void)feature;
-	*why = 0;
-	return 1;
-}
 #if defined(real_fma)
 /* a b >= c d, decided exactly. Rounding is monotonic, so rounded products that differ
  * order the exact ones; when they are equal, the exact difference is that of the
@@ -295,9 +202,6 @@ typedef real real_reciprocal;
 /* Dividing by a length sqrt(w): the root is the divisor, and the length. */
 #define real2_reciprocal_sqrt(w) real2_sqrt(w)
 #define real2_sqrt_by(w, r) ((void)(w), (r))
-/* How far b^2 - w can be off through rounding: relative errors, bounded generously. */
-#define real2_error_bound(b, w) ((real_mul2((b), (b)) + real_fabs(w)) * REAL_OFFSET)
-#define real2_unit_slack(w) ((w) * REAL_C(0.0009765625)) /* 2^-10 of w (see above) */
 #endif
 /* REAL_APART marks a function that stays a function of its own where flash is short
  * (REAL_OUTLINE: the M0), whatever the compiler would inline; each use says why. */
@@ -311,15 +215,5 @@ typedef real real_reciprocal;
  * positions, areas, quadratic coefficients): real_mul2(a, b) is a * b as a real2,
  * real2_dot3 is a dot product as a real2, real2_from widens, real2_sqrt gives back a real length, real2_div(w, b) is w / b as a
  * real, real2_ratio(a, b) is a / b as a real, real2_scale(w, a) is w * a for a unitless a. */
-
-
-/* Range budget (floating point): every number in a scene is at most 1e12 in magnitude,
- * so squares and dot products of coordinates (1e24 at most) and the bounding box
- * arithmetic stay finite in every type. Double keeps hit points accurate to ~1e-10
- * relative; float is good to ~1e3 units from the origin (numerics.md section 1).
- * Range budget (Q16.16): the parser scales the scene so that every coordinate is within
- * +-4096 (2^12); squares then reach 2^24 as real2 (Q32.32, up to 2^31), ray lengths
- * across the scene stay below 2^14, and features must stay at least 2^-4 after scaling
- * (their squares keep 8 bits), else the scene is refused. */
 
 #endif

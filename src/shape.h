@@ -8,6 +8,7 @@
 #define RT_SHAPE_H
 
 #include "scene.h"
+#include "tolerance.h"
 
 typedef struct {
 	vec3 origin;

@@ -1,12 +1,13 @@
 /* support.c - helpers shared by the unit-test suites.
  * See LICENSE for copyright and licence. */
-#include "load.h"
 #include "support.h"
 
 #include <math.h>
 #include <string.h>
 
+#include "load.h"
 #include "parse.h"
+#include "scale.h"
 #include "test.h"
 
 ray test_ray(vec3 origin, vec3 dir)
@@ -60,11 +61,11 @@ int test_parse_buffer(scene *s, const char *name, const char *text, diag_sink_fn
 int test_shift(double extent)
 {
 	/* As load_scene_source measures: at scale 1 when the extent fits there, else at
-	 * REAL_FIRST_PASS_SHIFT. */
+	 * SCALE_FIRST_PASS_SHIFT. */
 	if (extent < 32767.0)
-		return real_length_shift(test_real(extent), 0);
-	return real_length_shift(test_real(ldexp(extent, REAL_FIRST_PASS_SHIFT)),
-				 REAL_FIRST_PASS_SHIFT);
+		return scale_length_shift(test_real(extent), 0);
+	return scale_length_shift(test_real(ldexp(extent, SCALE_FIRST_PASS_SHIFT)),
+				 SCALE_FIRST_PASS_SHIFT);
 }
 
 real test_scaled(double x, int shift)

@@ -20,7 +20,7 @@ int test_parse_buffer(scene *s, const char *name, const char *text, diag_sink_fn
 		      void *ctx);
 
 /* The power of two by which the parser scales a scene whose largest coordinate is
- * `extent` (real_length_shift; always 0 in floating point), and a length at that scale
+ * `extent` (scale_length_shift; always 0 in floating point), and a length at that scale
  * as `real`, rounded once. */
 int test_shift(double extent);
 real test_scaled(double x, int shift);
