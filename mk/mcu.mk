@@ -76,8 +76,8 @@ mcu: build/mcu/rt-m0.elf build/mcu/rt-m3.elf
 # The fixed-point kernels' unit tests on each board (tests/mcu/kernels.c): fixed.h's
 # Thumb-1 assembly is compiled only there. Not optimised as one unit: only the kernels
 # and their tests are in it.
-MCU_KERNEL_SRC = tests/mcu/kernels.c tests/test_fixed.c src/fixed.c src/scale.c src/mcu/startup.c \
-	src/mcu/semihost.c
+MCU_KERNEL_SRC = tests/mcu/kernels.c tests/test_fixed.c src/fixed.c src/fixed_func.c \
+	src/fixed_text.c src/scale.c src/mcu/startup.c src/mcu/semihost.c
 build/mcu/kernels-%.elf: $(MCU_KERNEL_SRC) src/fixed.h tests/test.h build/mcu/%/libc.o \
 		src/mcu/sections.ld src/mcu/$$(MCU_BOARD_$$*).ld
 	$(call whole-program,$(MCU_CC),$(MCU_CFLAGS) -Itests -mcpu=$(MCU_CPU_$*) $(MCU_LINK) \

@@ -77,6 +77,9 @@ static inline uint64_t fixed_umul64_narrow(uint32_t a, uint32_t b)
 #define FIXED_ASM 0
 #define FIXED_PARTS static inline
 #endif
+#if FIXED_ASM
+#include "fixed_m0.h" /* the Cortex-M0's kernels in Thumb-1 assembly */
+#endif
 
 /* fixed_saturate((int64_t)a + b) in 32-bit arithmetic: the overflow test first. On the
  * M0 the add's own overflow flag tells it, and a sum of exactly -2^31 (no overflow, but
@@ -85,26 +88,7 @@ static inline uint64_t fixed_umul64_narrow(uint32_t a, uint32_t b)
 FIXED_PARTS int32_t fixed_add(int32_t a, int32_t b)
 {
 #if FIXED_ASM
-	int32_t sum, sign;
-	__asm__(".syntax unified\n\t"
-		"adds %[sum], %[a], %[b]\n\t"
-		"bvs 1f\n\t"
-		"subs %[sign], %[sum], #1\n\t" /* overflows for sum = -2^31 only */
-		"bvc 2f\n\t"
-		"adds %[sum], #1\n\t" /* -2^31 + 1 = -INT32_MAX */
-		"b 2f\n"
-		"1:\n\t"
-		"asrs %[sign], %[b], #31\n\t" /* the exact sum's sign: 0 or -1 */
-		"movs %[sum], #1\n\t"
-		"lsls %[sum], %[sum], #31\n\t"
-		"subs %[sum], #1\n\t"            /* INT32_MAX */
-		"eors %[sum], %[sign]\n\t"       /* or -2^31 */
-		"subs %[sum], %[sum], %[sign]\n" /* or -2^31 + 1 */
-		"2:"
-		: [sum] "=&l"(sum), [sign] "=&l"(sign)
-		: [a] "l"(a), [b] "l"(b)
-		: "cc");
-	return sum;
+	return fixed_add_m0(a, b);
 #else
 	if (b > 0 ? a > INT32_MAX - b : a < -INT32_MAX - b)
 		return b > 0 ? INT32_MAX : -INT32_MAX;
@@ -122,30 +106,7 @@ static inline int32_t fixed_abs(int32_t a)
 FIXED_PARTS void fixed_umul64_parts(uint32_t a, uint32_t b, uint32_t *low, uint32_t *high)
 {
 #if FIXED_ASM
-	uint32_t al, bl, product;
-	__asm__(".syntax unified\n\t"
-		"uxth %[al], %[a]\n\t"
-		"uxth %[bl], %[b]\n\t"
-		"lsrs %[a], %[a], #16\n\t"
-		"lsrs %[b], %[b], #16\n\t"
-		"movs %[p], %[al]\n\t"
-		"muls %[p], %[bl]\n\t" /* al bl */
-		"muls %[al], %[b]\n\t" /* al bh */
-		"muls %[bl], %[a]\n\t" /* ah bl */
-		"muls %[b], %[a]\n\t"  /* ah bh */
-		"lsls %[a], %[al], #16\n\t"
-		"lsrs %[al], %[al], #16\n\t"
-		"adds %[p], %[a]\n\t"
-		"adcs %[b], %[al]\n\t"
-		"lsls %[a], %[bl], #16\n\t"
-		"lsrs %[bl], %[bl], #16\n\t"
-		"adds %[p], %[a]\n\t"
-		"adcs %[b], %[bl]"
-		: [a] "+l"(a), [b] "+l"(b), [al] "=&l"(al), [bl] "=&l"(bl), [p] "=&l"(product)
-		:
-		: "cc");
-	*low = product;
-	*high = b;
+	fixed_umul64_parts_m0(a, b, low, high);
 #else
 	/* Elsewhere the compiler's own product where it is cheap (a Cortex-M3 has one
 	 * instruction for it), the 16 x 16 form on a narrow core without GCC. */
@@ -170,33 +131,7 @@ FIXED_PARTS uint64_t fixed_umul64(uint32_t a, uint32_t b)
 FIXED_PARTS void fixed_wide_mul_parts(int32_t a, int32_t b, uint32_t *low, int32_t *high)
 {
 #if FIXED_ASM
-	uint32_t al, bl, product;
-	/* a and b become their high halves; the four products, then each cross product
-	 * added at bit 16 with its carry. GCC hands Thumb-1 inline assembly to the
-	 * assembler in the old divided syntax: these lines are in unified syntax. */
-	__asm__(".syntax unified\n\t"
-		"uxth %[al], %[a]\n\t"
-		"uxth %[bl], %[b]\n\t"
-		"asrs %[a], %[a], #16\n\t"
-		"asrs %[b], %[b], #16\n\t"
-		"movs %[p], %[al]\n\t"
-		"muls %[p], %[bl]\n\t" /* al bl */
-		"muls %[al], %[b]\n\t" /* al bh */
-		"muls %[bl], %[a]\n\t" /* ah bl */
-		"muls %[b], %[a]\n\t"  /* ah bh */
-		"lsls %[a], %[al], #16\n\t"
-		"asrs %[al], %[al], #16\n\t"
-		"adds %[p], %[a]\n\t"
-		"adcs %[b], %[al]\n\t"
-		"lsls %[a], %[bl], #16\n\t"
-		"asrs %[bl], %[bl], #16\n\t"
-		"adds %[p], %[a]\n\t"
-		"adcs %[b], %[bl]"
-		: [a] "+l"(a), [b] "+l"(b), [al] "=&l"(al), [bl] "=&l"(bl), [p] "=&l"(product)
-		:
-		: "cc");
-	*low = product;
-	*high = b;
+	fixed_wide_mul_parts_m0(a, b, low, high);
 #else
 	int64_t product = FIXED_NARROW ? fixed_wide_mul_narrow(a, b) : (int64_t)a * b;
 	*low = (uint32_t)product;
@@ -209,16 +144,7 @@ FIXED_PARTS void fixed_add_parts(uint32_t *low, int32_t *high, uint32_t add_low,
 				   int32_t add_high)
 {
 #if FIXED_ASM
-	uint32_t l = *low;
-	int32_t h = *high;
-	__asm__(".syntax unified\n\t"
-		"adds %[l], %[al]\n\t"
-		"adcs %[h], %[ah]"
-		: [l] "+l"(l), [h] "+l"(h)
-		: [al] "l"(add_low), [ah] "l"(add_high)
-		: "cc");
-	*low = l;
-	*high = h;
+	fixed_add_parts_m0(low, high, add_low, add_high);
 #else
 	uint32_t sum = *low + add_low;
 	*high = (int32_t)((uint32_t)*high + (uint32_t)add_high + (sum < add_low));
@@ -353,28 +279,7 @@ static inline uint32_t fixed_udiv_narrow(uint64_t n, uint32_t d)
 		steps = 16;
 	}
 #if FIXED_ASM
-	/* (rem, low) shifts left as one 64-bit number; a carry out of rem means the
-	 * remainder passed 2^32 > d. Four steps per pass (16 and 32 are multiples of 4):
-	 * the count and its branch once per four quotient bits. Each step's labels 2 and 3
-	 * are its own: `2f` and `3f` name the next ones. */
-#define FIXED_UDIV_STEP                     \
-	"adds %[low], %[low]\n\t"          \
-	"adcs %[rem], %[rem]\n\t"          \
-	"bcs 2f\n\t"                       \
-	"cmp %[rem], %[d]\n\t"             \
-	"bcc 3f\n"                          \
-	"2:\n\t"                           \
-	"subs %[rem], %[d]\n\t"            \
-	"adds %[low], #1\n"                 \
-	"3:\n\t"
-	__asm__(".syntax unified\n"
-		"1:\n\t" FIXED_UDIV_STEP FIXED_UDIV_STEP FIXED_UDIV_STEP FIXED_UDIV_STEP
-		"subs %[steps], #4\n\t"
-		"bne 1b"
-		: [low] "+l"(low), [rem] "+l"(rem), [steps] "+l"(steps)
-		: [d] "l"(d)
-		: "cc");
-#undef FIXED_UDIV_STEP
+	fixed_udiv_steps_m0(&low, &rem, d, steps);
 #else
 	for (; steps > 0; steps--) {
 		/* rem < d, so 2 rem + 1 < 2^33: the bit shifted out is the 33rd. */
