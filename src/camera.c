@@ -9,9 +9,9 @@
  * Q4.28 times 4 is Q2.60 (below 2^61), over cos (Q4.28) times the width. A narrow view's
  * steps keep their precision this way: from a Q16.16 half_width they kept 4 bits at 0.007
  * degrees. Times a coordinate of at most twice the image size (2^14) the sums stay far
- * inside 64 bits, for any angle. Apart (REAL_APART): inlined into camera_init's loop it
+ * inside 64 bits, for any angle. Apart (RT_APART): inlined into camera_init's loop it
  * cost 16 bytes more M0 flash. */
-REAL_APART static real2 image_plane_step(const camera *c, unit axis)
+RT_APART static real2 image_plane_step(const camera *c, unit axis)
 {
 	return fixed_round_div((int64_t)axis * c->half_sin * 4, (int64_t)c->half_cos * c->width);
 }

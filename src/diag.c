@@ -2,10 +2,10 @@
  * See LICENSE for copyright and licence. */
 #include "diag.h"
 
-#include "real.h" /* REAL_APART */
-
 #include <stdio.h>
 #include <string.h>
+
+#include "flash.h"
 
 static diag_sink_fn current_sink = diag_standard_error;
 static void *current_ctx;
@@ -26,8 +26,8 @@ void diag_set_sink(diag_sink_fn sink, void *ctx)
 
 /* Appends to a message buffer, never past its end (one byte is kept for the newline). A
  * cut message is the same whether its parts are appended one by one or all at once.
- * One copy for its callers (REAL_APART): 16 bytes less M0 flash. */
-REAL_APART static size_t vappend(char *buf, size_t size, size_t used, const char *fmt, va_list ap)
+ * One copy for its callers (RT_APART): 16 bytes less M0 flash. */
+RT_APART static size_t vappend(char *buf, size_t size, size_t used, const char *fmt, va_list ap)
 {
 	int n;
 	if (used + 2 >= size)

@@ -76,13 +76,13 @@ uint64_t fixed_isqrt64(uint64_t x)
 }
 
 /* Apart: 12 bytes less M0 flash than inlined where it is used. */
-FIXED_APART int32_t fixed_sqrt(int32_t a)
+RT_APART int32_t fixed_sqrt(int32_t a)
 {
 	return a <= 0 ? 0 : fixed_saturate((int64_t)fixed_isqrt64((uint64_t)a << 16));
 }
 
 /* Apart: 32 bytes less M0 flash than inlined where it is used. */
-FIXED_APART int32_t fixed_sqrt2(int64_t w)
+RT_APART int32_t fixed_sqrt2(int64_t w)
 {
 	return w <= 0 ? 0 : fixed_saturate((int64_t)fixed_isqrt64((uint64_t)w));
 }
@@ -178,7 +178,7 @@ int32_t fixed_sqrt_by_reciprocal(int64_t w, fixed_reciprocal r)
 
 /* Apart: its 64-bit arithmetic inlined into the polygon parser cost 60 bytes more
  * M0 flash. */
-FIXED_APART int32_t fixed_ratio2(int64_t a, int64_t b)
+RT_APART int32_t fixed_ratio2(int64_t a, int64_t b)
 {
 	int negative = (a < 0) != (b < 0);
 	int64_t q;

@@ -9,6 +9,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "flash.h"
+
 #define FIXED_ONE 65536      /* 1.0 */
 #define FIXED_MAX INT32_MAX  /* largest value, about 32768.0 */
 
@@ -71,11 +73,8 @@ static inline uint64_t fixed_umul64_narrow(uint32_t a, uint32_t b)
  * unit tests check the forms built on them on every build. */
 #if FIXED_NARROW && defined(__GNUC__)
 #define FIXED_ASM 1
-/* Inlined into the kernels that use them, whatever -Os thinks: that is their point. */
-#define FIXED_PARTS static inline __attribute__((always_inline))
 #else
 #define FIXED_ASM 0
-#define FIXED_PARTS static inline
 #endif
 #if FIXED_ASM
 #include "fixed_m0.h" /* the Cortex-M0's kernels in Thumb-1 assembly */
@@ -85,7 +84,7 @@ static inline uint64_t fixed_umul64_narrow(uint32_t a, uint32_t b)
  * M0 the add's own overflow flag tells it, and a sum of exactly -2^31 (no overflow, but
  * outside the range) is the one other case: two instructions more, where the C test is
  * six (vector sums are most of its uses). */
-FIXED_PARTS int32_t fixed_add(int32_t a, int32_t b)
+RT_INLINE int32_t fixed_add(int32_t a, int32_t b)
 {
 #if FIXED_ASM
 	return fixed_add_m0(a, b);
@@ -103,7 +102,7 @@ static inline int32_t fixed_abs(int32_t a)
 }
 
 /* a b as (*high << 32) + *low for unsigned a and b, as fixed_umul64_narrow. */
-FIXED_PARTS void fixed_umul64_parts(uint32_t a, uint32_t b, uint32_t *low, uint32_t *high)
+RT_INLINE void fixed_umul64_parts(uint32_t a, uint32_t b, uint32_t *low, uint32_t *high)
 {
 #if FIXED_ASM
 	fixed_umul64_parts_m0(a, b, low, high);
@@ -116,7 +115,7 @@ FIXED_PARTS void fixed_umul64_parts(uint32_t a, uint32_t b, uint32_t *low, uint3
 #endif
 }
 
-FIXED_PARTS uint64_t fixed_umul64(uint32_t a, uint32_t b)
+RT_INLINE uint64_t fixed_umul64(uint32_t a, uint32_t b)
 {
 #if FIXED_NARROW
 	uint32_t low, high;
@@ -128,7 +127,7 @@ FIXED_PARTS uint64_t fixed_umul64(uint32_t a, uint32_t b)
 }
 
 /* a b as (*high << 32) + *low, exactly. */
-FIXED_PARTS void fixed_wide_mul_parts(int32_t a, int32_t b, uint32_t *low, int32_t *high)
+RT_INLINE void fixed_wide_mul_parts(int32_t a, int32_t b, uint32_t *low, int32_t *high)
 {
 #if FIXED_ASM
 	fixed_wide_mul_parts_m0(a, b, low, high);
@@ -140,7 +139,7 @@ FIXED_PARTS void fixed_wide_mul_parts(int32_t a, int32_t b, uint32_t *low, int32
 }
 
 /* (*high, *low) += (high, low), wrapping as 64-bit two's complement. */
-FIXED_PARTS void fixed_add_parts(uint32_t *low, int32_t *high, uint32_t add_low,
+RT_INLINE void fixed_add_parts(uint32_t *low, int32_t *high, uint32_t add_low,
 				   int32_t add_high)
 {
 #if FIXED_ASM
@@ -152,7 +151,7 @@ FIXED_PARTS void fixed_add_parts(uint32_t *low, int32_t *high, uint32_t add_low,
 #endif
 }
 
-FIXED_PARTS int64_t fixed_join_parts(uint32_t low, int32_t high)
+RT_INLINE int64_t fixed_join_parts(uint32_t low, int32_t high)
 {
 	return (int64_t)(((uint64_t)(uint32_t)high << 32) | low);
 }
@@ -161,7 +160,7 @@ FIXED_PARTS int64_t fixed_join_parts(uint32_t low, int32_t high)
  * shift and no call): bits = 16 rounds a Q32.32 value to Q16.16; bits = 30 rounds a product
  * with a Q2.30 factor (Q4.60, or Q18.46 for a Q16.16 one) back to its other factor's
  * format. bits is a constant at most calls (16 or 30); eye rays drop 2 to 16 (camera.c). */
-FIXED_PARTS int32_t fixed_round_parts(uint32_t low, int32_t high, int bits)
+RT_INLINE int32_t fixed_round_parts(uint32_t low, int32_t high, int bits)
 {
 	uint32_t half = (uint32_t)1 << (bits - 1);
 	int32_t v;
@@ -175,7 +174,7 @@ FIXED_PARTS int32_t fixed_round_parts(uint32_t low, int32_t high, int bits)
 }
 
 /* fixed_mul, fixed_dot3 and the dot product as 64 bits, from the parts. */
-FIXED_PARTS int32_t fixed_mul_narrow(int32_t a, int32_t b)
+RT_INLINE int32_t fixed_mul_narrow(int32_t a, int32_t b)
 {
 	uint32_t low;
 	int32_t high;
@@ -183,7 +182,7 @@ FIXED_PARTS int32_t fixed_mul_narrow(int32_t a, int32_t b)
 	return fixed_round_parts(low, high, 16);
 }
 
-FIXED_PARTS void fixed_dot3_parts(int32_t ax, int32_t ay, int32_t az, int32_t bx,
+RT_INLINE void fixed_dot3_parts(int32_t ax, int32_t ay, int32_t az, int32_t bx,
 				    int32_t by, int32_t bz, uint32_t *low, int32_t *high)
 {
 	uint32_t l;
@@ -195,7 +194,7 @@ FIXED_PARTS void fixed_dot3_parts(int32_t ax, int32_t ay, int32_t az, int32_t bx
 	fixed_add_parts(low, high, l, h);
 }
 
-FIXED_PARTS int32_t fixed_dot3_narrow(int32_t ax, int32_t ay, int32_t az, int32_t bx,
+RT_INLINE int32_t fixed_dot3_narrow(int32_t ax, int32_t ay, int32_t az, int32_t bx,
 					int32_t by, int32_t bz)
 {
 	uint32_t low;
@@ -204,7 +203,7 @@ FIXED_PARTS int32_t fixed_dot3_narrow(int32_t ax, int32_t ay, int32_t az, int32_
 	return fixed_round_parts(low, high, 16);
 }
 
-FIXED_PARTS int64_t fixed_dot3_wide_narrow(int32_t ax, int32_t ay, int32_t az, int32_t bx,
+RT_INLINE int64_t fixed_dot3_wide_narrow(int32_t ax, int32_t ay, int32_t az, int32_t bx,
 					     int32_t by, int32_t bz)
 {
 	uint32_t low;
@@ -214,7 +213,7 @@ FIXED_PARTS int64_t fixed_dot3_wide_narrow(int32_t ax, int32_t ay, int32_t az, i
 }
 
 /* The same rounded at bit 30: products and dot products with Q2.30 numbers. */
-FIXED_PARTS int32_t fixed_mul30_narrow(int32_t a, int32_t b)
+RT_INLINE int32_t fixed_mul30_narrow(int32_t a, int32_t b)
 {
 	uint32_t low;
 	int32_t high;
@@ -222,7 +221,7 @@ FIXED_PARTS int32_t fixed_mul30_narrow(int32_t a, int32_t b)
 	return fixed_round_parts(low, high, 30);
 }
 
-FIXED_PARTS int32_t fixed_dot3_30_narrow(int32_t ax, int32_t ay, int32_t az, int32_t bx,
+RT_INLINE int32_t fixed_dot3_30_narrow(int32_t ax, int32_t ay, int32_t az, int32_t bx,
 					   int32_t by, int32_t bz)
 {
 	uint32_t low;
@@ -319,29 +318,23 @@ static inline uint64_t fixed_udiv64_narrow(uint64_t n, uint64_t d)
 
 /* The kernels. On the M0 each is one out-of-line function, defined once in fixed.c
  * (which sets FIXED_KERNEL_BODIES): inlined copies in every file overflow its flash.
- * Elsewhere they are inline, and the 64-bit ones are the compiler's own arithmetic. */
-#if FIXED_NARROW && defined(__GNUC__)
-#define FIXED_KERNEL __attribute__((noinline))
-#elif FIXED_NARROW
-#define FIXED_KERNEL
-#else
-#define FIXED_KERNEL static inline
-#endif
-FIXED_KERNEL int64_t fixed_wide_mul(int32_t a, int32_t b);     /* a b, exactly */
-FIXED_KERNEL uint32_t fixed_udiv(uint64_t n, uint32_t d);      /* n / d, or UINT32_MAX */
-FIXED_KERNEL uint64_t fixed_udiv64(uint64_t n, uint64_t d);    /* n / d; UINT64_MAX if d = 0 */
-FIXED_KERNEL int64_t fixed_div64(int64_t n, int64_t d);        /* n / d, truncated */
-FIXED_KERNEL int64_t fixed_round_div(int64_t n, int64_t d);    /* n / d, rounded */
-FIXED_KERNEL int32_t fixed_round_div_sat(int64_t n, int32_t d); /* rounded, saturated */
-FIXED_KERNEL int32_t fixed_mul(int32_t a, int32_t b);
-FIXED_KERNEL int32_t fixed_dot3(int32_t ax, int32_t ay, int32_t az, int32_t bx, int32_t by,
+ * Elsewhere they are inline (RT_SHARED), and the 64-bit ones are the compiler's own
+ * arithmetic. */
+RT_SHARED int64_t fixed_wide_mul(int32_t a, int32_t b);     /* a b, exactly */
+RT_SHARED uint32_t fixed_udiv(uint64_t n, uint32_t d);      /* n / d, or UINT32_MAX */
+RT_SHARED uint64_t fixed_udiv64(uint64_t n, uint64_t d);    /* n / d; UINT64_MAX if d = 0 */
+RT_SHARED int64_t fixed_div64(int64_t n, int64_t d);        /* n / d, truncated */
+RT_SHARED int64_t fixed_round_div(int64_t n, int64_t d);    /* n / d, rounded */
+RT_SHARED int32_t fixed_round_div_sat(int64_t n, int32_t d); /* rounded, saturated */
+RT_SHARED int32_t fixed_mul(int32_t a, int32_t b);
+RT_SHARED int32_t fixed_dot3(int32_t ax, int32_t ay, int32_t az, int32_t bx, int32_t by,
 				int32_t bz);
-FIXED_KERNEL int64_t fixed_dot3_wide(int32_t ax, int32_t ay, int32_t az, int32_t bx,
+RT_SHARED int64_t fixed_dot3_wide(int32_t ax, int32_t ay, int32_t az, int32_t bx,
 				     int32_t by, int32_t bz); /* as 64 bits, exactly */
-FIXED_KERNEL int32_t fixed_div(int32_t a, int32_t b);
-FIXED_KERNEL int32_t fixed_from_int(long i);
-FIXED_KERNEL int32_t fixed_div2(int64_t w, int32_t b);
-FIXED_KERNEL int64_t fixed_scale2(int64_t w, int32_t a);
+RT_SHARED int32_t fixed_div(int32_t a, int32_t b);
+RT_SHARED int32_t fixed_from_int(long i);
+RT_SHARED int32_t fixed_div2(int64_t w, int32_t b);
+RT_SHARED int64_t fixed_scale2(int64_t w, int32_t a);
 /* a - b, saturating to +-INT64_MAX instead of overflowing. */
 static inline int64_t fixed_sub2_sat(int64_t a, int64_t b)
 {
@@ -360,10 +353,10 @@ typedef struct {
 	int shift;      /* 14 + bits of |d| */
 	int negative;   /* d < 0 */
 } fixed_reciprocal;
-FIXED_KERNEL fixed_reciprocal fixed_reciprocal_of(int32_t d);
+RT_SHARED fixed_reciprocal fixed_reciprocal_of(int32_t d);
 /* x / d: x times the reciprocal's scale over 2^shift, given as numbers (a struct is
  * kept in memory on the M0). */
-FIXED_KERNEL int32_t fixed_times_scale(int32_t x, uint32_t scale, int shift, int negative);
+RT_SHARED int32_t fixed_times_scale(int32_t x, uint32_t scale, int shift, int negative);
 static inline int32_t fixed_times_reciprocal(int32_t x, fixed_reciprocal r)
 {
 	return fixed_times_scale(x, r.scale, r.shift, r.negative);
@@ -372,10 +365,10 @@ static inline int32_t fixed_times_reciprocal(int32_t x, fixed_reciprocal r)
 /* Q2.30 (unit-length quantities): a b / 2^30 and a dot product / 2^30, rounded and
  * saturated, keep the format of the factor that is not Q2.30 (Q2.30 when both are);
  * a / b for a Q16.16 over a Q2.30. */
-FIXED_KERNEL int32_t fixed_mul30(int32_t a, int32_t b);
-FIXED_KERNEL int32_t fixed_dot3_30(int32_t ax, int32_t ay, int32_t az, int32_t bx, int32_t by,
+RT_SHARED int32_t fixed_mul30(int32_t a, int32_t b);
+RT_SHARED int32_t fixed_dot3_30(int32_t ax, int32_t ay, int32_t az, int32_t bx, int32_t by,
 				   int32_t bz);
-FIXED_KERNEL int32_t fixed_div30(int32_t a, int32_t b);
+RT_SHARED int32_t fixed_div30(int32_t a, int32_t b);
 
 /* The reciprocal whose quotients are Q2.30 units (for |x| <= |d|): its scale over
  * 2^(shift - 14), not 2^shift, 14 more fraction bits. Its shift is at least 15 (d is at
@@ -386,16 +379,9 @@ static inline fixed_reciprocal fixed_unit_reciprocal(fixed_reciprocal r)
 	return r;
 }
 
-/* FIXED_APART: one of fixed.c's functions below kept out of line on the M0, where
- * link-time optimisation would inline it into its caller; each use says what it saves. */
-#if FIXED_NARROW && defined(__GNUC__)
-#define FIXED_APART __attribute__((noinline))
-#else
-#define FIXED_APART
-#endif
 
 #if !FIXED_NARROW || defined(FIXED_KERNEL_BODIES)
-FIXED_KERNEL int64_t fixed_wide_mul(int32_t a, int32_t b)
+RT_SHARED int64_t fixed_wide_mul(int32_t a, int32_t b)
 {
 #if FIXED_NARROW
 	uint32_t low;
@@ -407,7 +393,7 @@ FIXED_KERNEL int64_t fixed_wide_mul(int32_t a, int32_t b)
 #endif
 }
 
-FIXED_KERNEL uint32_t fixed_udiv(uint64_t n, uint32_t d)
+RT_SHARED uint32_t fixed_udiv(uint64_t n, uint32_t d)
 {
 #if FIXED_NARROW
 	return fixed_udiv_narrow(n, d);
@@ -417,7 +403,7 @@ FIXED_KERNEL uint32_t fixed_udiv(uint64_t n, uint32_t d)
 #endif
 }
 
-FIXED_KERNEL uint64_t fixed_udiv64(uint64_t n, uint64_t d)
+RT_SHARED uint64_t fixed_udiv64(uint64_t n, uint64_t d)
 {
 #if FIXED_NARROW
 	return fixed_udiv64_narrow(n, d);
@@ -428,7 +414,7 @@ FIXED_KERNEL uint64_t fixed_udiv64(uint64_t n, uint64_t d)
 
 
 /* n / d truncated towards zero, as C's `/` (d != 0), through the kernels above. */
-FIXED_KERNEL int64_t fixed_div64(int64_t n, int64_t d)
+RT_SHARED int64_t fixed_div64(int64_t n, int64_t d)
 {
 	uint64_t q = fixed_udiv64(n < 0 ? 0u - (uint64_t)n : (uint64_t)n,
 				  d < 0 ? 0u - (uint64_t)d : (uint64_t)d);
@@ -436,7 +422,7 @@ FIXED_KERNEL int64_t fixed_div64(int64_t n, int64_t d)
 }
 
 /* n / d rounded to nearest, halves away from zero (|n| + |d| / 2 must fit 63 bits). */
-FIXED_KERNEL int64_t fixed_round_div(int64_t n, int64_t d)
+RT_SHARED int64_t fixed_round_div(int64_t n, int64_t d)
 {
 	int64_t half = (d < 0 ? -d : d) / 2;
 	/* Away from zero: the half goes the way n points (the division truncates). */
@@ -444,7 +430,7 @@ FIXED_KERNEL int64_t fixed_round_div(int64_t n, int64_t d)
 }
 
 /* n / d rounded to nearest, halves away from zero, saturated to Q16.16's range. */
-FIXED_KERNEL int32_t fixed_round_div_sat(int64_t n, int32_t d)
+RT_SHARED int32_t fixed_round_div_sat(int64_t n, int32_t d)
 {
 	uint64_t magnitude = n < 0 ? 0u - (uint64_t)n : (uint64_t)n;
 	uint32_t divisor = d < 0 ? 0u - (uint32_t)d : (uint32_t)d;
@@ -458,7 +444,7 @@ FIXED_KERNEL int32_t fixed_round_div_sat(int64_t n, int32_t d)
 	return (n < 0) != (d < 0) ? -(int32_t)q : (int32_t)q;
 }
 
-FIXED_KERNEL int32_t fixed_mul(int32_t a, int32_t b)
+RT_SHARED int32_t fixed_mul(int32_t a, int32_t b)
 {
 #if FIXED_NARROW
 	return fixed_mul_narrow(a, b);
@@ -468,7 +454,7 @@ FIXED_KERNEL int32_t fixed_mul(int32_t a, int32_t b)
 }
 
 /* A dot product summed in 64 bits and rounded once. */
-FIXED_KERNEL int32_t fixed_dot3(int32_t ax, int32_t ay, int32_t az, int32_t bx, int32_t by,
+RT_SHARED int32_t fixed_dot3(int32_t ax, int32_t ay, int32_t az, int32_t bx, int32_t by,
 				 int32_t bz)
 {
 #if FIXED_NARROW
@@ -479,7 +465,7 @@ FIXED_KERNEL int32_t fixed_dot3(int32_t ax, int32_t ay, int32_t az, int32_t bx, 
 #endif
 }
 
-FIXED_KERNEL int64_t fixed_dot3_wide(int32_t ax, int32_t ay, int32_t az, int32_t bx,
+RT_SHARED int64_t fixed_dot3_wide(int32_t ax, int32_t ay, int32_t az, int32_t bx,
 				     int32_t by, int32_t bz)
 {
 #if FIXED_NARROW
@@ -494,7 +480,7 @@ FIXED_KERNEL int64_t fixed_dot3_wide(int32_t ax, int32_t ay, int32_t az, int32_t
 #endif
 }
 
-FIXED_KERNEL int32_t fixed_div(int32_t a, int32_t b)
+RT_SHARED int32_t fixed_div(int32_t a, int32_t b)
 {
 	if (b == 0)
 		return a >= 0 ? FIXED_MAX : -FIXED_MAX;
@@ -502,13 +488,13 @@ FIXED_KERNEL int32_t fixed_div(int32_t a, int32_t b)
 }
 
 
-FIXED_KERNEL int32_t fixed_from_int(long i)
+RT_SHARED int32_t fixed_from_int(long i)
 {
 	return i > 32767 ? FIXED_MAX : i < -32767 ? -FIXED_MAX : (int32_t)(i * 65536);
 }
 
 /* Q32.32 (a squared length) divided by Q16.16 gives Q16.16. */
-FIXED_KERNEL int32_t fixed_div2(int64_t w, int32_t b)
+RT_SHARED int32_t fixed_div2(int64_t w, int32_t b)
 {
 	if (b == 0)
 		return w >= 0 ? FIXED_MAX : -FIXED_MAX;
@@ -517,7 +503,7 @@ FIXED_KERNEL int32_t fixed_div2(int64_t w, int32_t b)
 
 /* w (Q32.32) times a (Q16.16) as Q32.32, saturating when the product could pass 2^63
  * (a bit-length test: no 64-bit division). */
-FIXED_KERNEL int64_t fixed_scale2(int64_t w, int32_t a)
+RT_SHARED int64_t fixed_scale2(int64_t w, int32_t a)
 {
 	/* |w / 65536| (truncated, as C divides) is |w| >> 16. */
 	uint64_t mh = (w < 0 ? 0u - (uint64_t)w : (uint64_t)w) >> 16;
@@ -535,7 +521,7 @@ FIXED_KERNEL int64_t fixed_scale2(int64_t w, int32_t a)
 	return (w < 0) != (a < 0) ? -(int64_t)product : (int64_t)product;
 }
 
-FIXED_KERNEL fixed_reciprocal fixed_reciprocal_of(int32_t d)
+RT_SHARED fixed_reciprocal fixed_reciprocal_of(int32_t d)
 {
 	fixed_reciprocal r;
 	uint32_t magnitude = d < 0 ? 0u - (uint32_t)d : (uint32_t)d;
@@ -546,7 +532,7 @@ FIXED_KERNEL fixed_reciprocal fixed_reciprocal_of(int32_t d)
 	return r;
 }
 
-FIXED_KERNEL int32_t fixed_times_scale(int32_t x, uint32_t scale, int shift, int negative)
+RT_SHARED int32_t fixed_times_scale(int32_t x, uint32_t scale, int shift, int negative)
 {
 	/* x 2^16 / d = x scale / 2^shift, rounded half away from zero: the product (below
 	 * 2^62) in 32-bit halves, and the shift (1 to 46) on them, not on 64 bits. */
@@ -572,7 +558,7 @@ FIXED_KERNEL int32_t fixed_times_scale(int32_t x, uint32_t scale, int shift, int
 }
 
 /* Rounded at bit 29 and saturated: on the M0 in 32-bit halves, inlined (as fixed_mul). */
-FIXED_KERNEL int32_t fixed_mul30(int32_t a, int32_t b)
+RT_SHARED int32_t fixed_mul30(int32_t a, int32_t b)
 {
 #if FIXED_NARROW
 	return fixed_mul30_narrow(a, b);
@@ -581,7 +567,7 @@ FIXED_KERNEL int32_t fixed_mul30(int32_t a, int32_t b)
 #endif
 }
 
-FIXED_KERNEL int32_t fixed_dot3_30(int32_t ax, int32_t ay, int32_t az, int32_t bx, int32_t by,
+RT_SHARED int32_t fixed_dot3_30(int32_t ax, int32_t ay, int32_t az, int32_t bx, int32_t by,
 				   int32_t bz)
 {
 #if FIXED_NARROW
@@ -593,7 +579,7 @@ FIXED_KERNEL int32_t fixed_dot3_30(int32_t ax, int32_t ay, int32_t az, int32_t b
 #endif
 }
 
-FIXED_KERNEL int32_t fixed_div30(int32_t a, int32_t b)
+RT_SHARED int32_t fixed_div30(int32_t a, int32_t b)
 {
 	if (b == 0)
 		return a >= 0 ? FIXED_MAX : -FIXED_MAX;

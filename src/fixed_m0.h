@@ -9,7 +9,7 @@
 #ifndef RT_FIXED_M0_H
 #define RT_FIXED_M0_H
 
-FIXED_PARTS int32_t fixed_add_m0(int32_t a, int32_t b)
+RT_INLINE int32_t fixed_add_m0(int32_t a, int32_t b)
 {
 	int32_t sum, sign;
 	__asm__(".syntax unified\n\t"
@@ -33,7 +33,7 @@ FIXED_PARTS int32_t fixed_add_m0(int32_t a, int32_t b)
 	return sum;
 }
 
-FIXED_PARTS void fixed_umul64_parts_m0(uint32_t a, uint32_t b, uint32_t *low, uint32_t *high)
+RT_INLINE void fixed_umul64_parts_m0(uint32_t a, uint32_t b, uint32_t *low, uint32_t *high)
 {
 	uint32_t al, bl, product;
 	__asm__(".syntax unified\n\t"
@@ -61,7 +61,7 @@ FIXED_PARTS void fixed_umul64_parts_m0(uint32_t a, uint32_t b, uint32_t *low, ui
 	*high = b;
 }
 
-FIXED_PARTS void fixed_wide_mul_parts_m0(int32_t a, int32_t b, uint32_t *low, int32_t *high)
+RT_INLINE void fixed_wide_mul_parts_m0(int32_t a, int32_t b, uint32_t *low, int32_t *high)
 {
 	uint32_t al, bl, product;
 	/* a and b become their high halves; the four products, then each cross product
@@ -91,7 +91,7 @@ FIXED_PARTS void fixed_wide_mul_parts_m0(int32_t a, int32_t b, uint32_t *low, in
 	*high = b;
 }
 
-FIXED_PARTS void fixed_add_parts_m0(uint32_t *low, int32_t *high, uint32_t add_low,
+RT_INLINE void fixed_add_parts_m0(uint32_t *low, int32_t *high, uint32_t add_low,
 				   int32_t add_high)
 {
 	uint32_t l = *low;
@@ -108,7 +108,7 @@ FIXED_PARTS void fixed_add_parts_m0(uint32_t *low, int32_t *high, uint32_t add_l
 
 /* The quotient steps of fixed_udiv_narrow: `steps` (16 or 32) bits of the quotient
  * shifted into *low as the remainder *rem (below d) takes the bits shifted out of it. */
-FIXED_PARTS void fixed_udiv_steps_m0(uint32_t *low_bits, uint32_t *remainder, uint32_t d,
+RT_INLINE void fixed_udiv_steps_m0(uint32_t *low_bits, uint32_t *remainder, uint32_t d,
 				     int steps)
 {
 	uint32_t low = *low_bits, rem = *remainder;

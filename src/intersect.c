@@ -8,10 +8,7 @@
 /* The shape's own test, inlined into the scene's loops below (on the M0 a call more per
  * object and ray was a tenth of all the work). Without origin terms (k NULL) the sphere
  * and plane tests make their own. */
-#if REAL_OUTLINE && defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline int shape_intersect(const scene *s, const object *o, const ray *r,
+RT_INLINE int shape_intersect(const scene *s, const object *o, const ray *r,
 				  const origin_term *k, real tmin, real tmax, hit *h)
 {
 	switch (o->kind) {

@@ -2,8 +2,8 @@
  * See LICENSE for copyright and licence. */
 #include "optics.h"
 
-/* Apart (REAL_APART): 20 bytes less M0 flash than inlined into the tracer. */
-REAL_APART dir3 optics_reflect(dir3 d, dir3 n)
+/* Apart (RT_APART): 20 bytes less M0 flash than inlined into the tracer. */
+RT_APART dir3 optics_reflect(dir3 d, dir3 n)
 {
 	return optics_reflect_at(d, n, dir_dot(d, n));
 }

@@ -38,8 +38,8 @@ typedef struct {
 } parser;
 
 /* Reported at the line of the entity that does not fit, naming the macro and its value.
- * One copy for its five callers (REAL_APART): 48 bytes less M0 flash. */
-REAL_APART static int capacity_error(parser *p, int line, const char *what, const char *limit, long value)
+ * One copy for its five callers (RT_APART): 48 bytes less M0 flash. */
+RT_APART static int capacity_error(parser *p, int line, const char *what, const char *limit, long value)
 {
 	return lexer_fail(&p->lx, line,
 		    "too many %s: the limit is %s = %ld (raise it in src/config.h)", what, limit,
@@ -110,8 +110,8 @@ static const char too_small[] = "too small to represent in " REAL_NAME;
 /* "zero", or why it is zero when it is not exactly (see too_small): a number read as 0 on
  * or after `line` (where the entity, or the polyhedron's row, starts), or `nonzero`, a
  * vector that is not all zero where the squares of numbers can underflow (not_all_zero).
- * One copy for its three callers (REAL_APART). */
-REAL_APART static const char *zero_word(const parser *p, int line, int nonzero)
+ * One copy for its three callers (RT_APART). */
+RT_APART static const char *zero_word(const parser *p, int line, int nonzero)
 {
 	return p->lx.tiny_line >= line || nonzero ? too_small : "zero";
 }
@@ -285,9 +285,9 @@ static int parse_sphere(parser *p)
 	return 1;
 }
 
-/* `p n` or `pp n` followed by n vertices (pp: each with its normal). Apart (REAL_APART):
+/* `p n` or `pp n` followed by n vertices (pp: each with its normal). Apart (RT_APART):
  * inlined into the entity loop it cost 48 bytes more M0 flash. */
-REAL_APART static int parse_polygon(parser *p, int patch)
+RT_APART static int parse_polygon(parser *p, int patch)
 {
 	scene *s = p->s;
 	int line = p->lx.tok_line, i, first = s->vertex_count;

@@ -19,6 +19,8 @@
 #define real_min(a, b) ((a) < (b) ? (a) : (b))
 #define real_max(a, b) ((a) > (b) ? (a) : (b))
 
+#include "flash.h" /* RT_APART, RT_INLINE, RT_SHARED */
+
 #if defined(RT_REAL_FIXED)
 #include "fixed.h"
 #else
@@ -77,8 +79,6 @@ typedef int64_t real2; /* Q32.32: squares and products of lengths */
 #define REAL_NAME "Q16.16 fixed point"
 #define REAL_FIXED 1
 #define REAL_SQUARES_UNDERFLOW 0 /* products are exact in 64 bits (real2) */
-/* Small flash (the M0): vec.h's operations become single out-of-line copies (vec.c). */
-#define REAL_OUTLINE FIXED_NARROW
 #define REAL_C(x) ((real)((x) * 65536.0 + ((x) < 0 ? -0.5 : 0.5)))
 #define REAL_MAX ((real)0x7FFFFFFF)
 #define real_mul(a, b) fixed_mul((a), (b))
@@ -177,7 +177,6 @@ typedef real unit;
 #define unit_fabs(u) real_fabs(u)
 #define unit_reciprocal(r) (r)
 #define REAL_FIXED 0
-#define REAL_OUTLINE 0
 #define REAL_SQUARES_UNDERFLOW 1 /* a number's square can round to 0 */
 #define real_mul(a, b) ((a) * (b))
 #define real_add(a, b) ((a) + (b))
@@ -202,13 +201,6 @@ typedef real real_reciprocal;
 /* Dividing by a length sqrt(w): the root is the divisor, and the length. */
 #define real2_reciprocal_sqrt(w) real2_sqrt(w)
 #define real2_sqrt_by(w, r) ((void)(w), (r))
-#endif
-/* REAL_APART marks a function that stays a function of its own where flash is short
- * (REAL_OUTLINE: the M0), whatever the compiler would inline; each use says why. */
-#if REAL_OUTLINE && defined(__GNUC__)
-#define REAL_APART __attribute__((noinline))
-#else
-#define REAL_APART
 #endif
 
 /* real2 is the type of squared lengths and products of two lengths (dot products of

@@ -35,7 +35,7 @@ typedef struct {
 			 * point is beyond the type's numbers; unset elsewhere */
 } hit;
 
-/* On the M0 the larger shape tests stay functions of their own (REAL_APART): inlined
+/* On the M0 the larger shape tests stay functions of their own (RT_APART): inlined
  * into the dispatch that the scene's loops inline (intersect.c), their frames added up to
  * one of 204 bytes that every test paid to set up. */
 
@@ -89,19 +89,19 @@ int sphere_coarse_miss(const sphere_shape *s, dir3 d, const vec3 *f, const real2
 
 /* The sphere and plane tests from the origin's terms k (or NULL: they compute their own):
  * the same results either way. */
-REAL_APART int sphere_intersect_from(const object *o, const ray *r, const origin_term *k,
+RT_APART int sphere_intersect_from(const object *o, const ray *r, const origin_term *k,
 				     real tmin, real tmax, hit *h);
 int plane_intersect_from(const object *o, const ray *r, const origin_term *k, real tmin,
 			 real tmax, hit *h);
-REAL_APART int polygon_intersect(const scene *s, const object *o, const ray *r, real tmin,
+RT_APART int polygon_intersect(const scene *s, const object *o, const ray *r, real tmin,
 				 real tmax, hit *h);
 int cone_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h);
-REAL_APART int hedron_intersect(const scene *s, const object *o, const ray *r, real tmin,
+RT_APART int hedron_intersect(const scene *s, const object *o, const ray *r, real tmin,
 				real tmax, hit *h);
 /* offset - n.origin: how far the plane n.x = offset lies ahead of the origin along n,
  * saturating (an origin far beyond the scene, a hit whose point saturated, has a dot
  * product at the edge of fixed point's range). One copy on the M0 (plane.c). */
-REAL_APART real plane_gap(dir3 normal, real offset, const vec3 *origin);
+RT_APART real plane_gap(dir3 normal, real offset, const vec3 *origin);
 
 /* Does the ray's line pass through the polygon with vertices[0 .. count)? The crossings
  * test in the ray's frame (polygon.c): the same answer for an edge or vertex in every

@@ -41,7 +41,7 @@ int sphere_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h
  * (rounded by 2^-17 more) lies in (bq - e, bq + 1 + e), bq = floor(B 2^-14), B = dh.fh:
  * b > 0 when bq >= e, and |b| + 1 < bm = |bq| + e + 2. bm^2 < c (1 - 2^-10 - 2^-15)
  * then implies the clear miss's b^2 + |b| 2^-16 + 2^-15 < c (1 - 2^-10 - 2^-16). */
-FIXED_PARTS int coarse_miss(int32_t fx, int32_t fy, int32_t fz, dir3 d, int32_t c_floor)
+RT_INLINE int coarse_miss(int32_t fx, int32_t fy, int32_t fz, dir3 d, int32_t c_floor)
 {
 	/* Each product is below 2^30 in size; their sum below 2^31 for a unit d (sqrt(3)
 	 * 2^29), and summed in unsigned arithmetic, so that a direction that is not unit
@@ -62,7 +62,7 @@ FIXED_PARTS int coarse_miss(int32_t fx, int32_t fy, int32_t fz, dir3 d, int32_t 
 
 /* Inlined at both of its uses in the sphere test (on the M0 a call and its frame would
  * cost half of what it saves); sphere_coarse_miss is the same, for the tests. */
-FIXED_PARTS int coarse_miss_of(const sphere_shape *s, dir3 d, const vec3 *f, const real2 *c)
+RT_INLINE int coarse_miss_of(const sphere_shape *s, dir3 d, const vec3 *f, const real2 *c)
 {
 	int32_t fx = f->x >> 16, fy = f->y >> 16, fz = f->z >> 16, c_floor;
 	if (c) {

@@ -20,8 +20,8 @@
  * pixel can show, whatever weight a path gives it. */
 #define COLOR_MAX REAL_C(256.0)
 
-/* One copy for its callers (REAL_APART): 96 bytes less M0 flash. */
-REAL_APART static vec3 bounded(vec3 c)
+/* One copy for its callers (RT_APART): 96 bytes less M0 flash. */
+RT_APART static vec3 bounded(vec3 c)
 {
 	return vec_make(real_min(c.x, COLOR_MAX), real_min(c.y, COLOR_MAX), real_min(c.z, COLOR_MAX));
 }
@@ -86,16 +86,16 @@ vec3 trace_offset(const hit *h, dir3 side)
 }
 
 /* Index of refraction of the medium on top of the stack (1 for the outside). Apart
- * (REAL_APART): inlined into trace_ray it cost 16 bytes more M0 flash. */
-REAL_APART static real medium_ior(const scene *s, const media *m)
+ * (RT_APART): inlined into trace_ray it cost 16 bytes more M0 flash. */
+RT_APART static real medium_ior(const scene *s, const media *m)
 {
 	return m->count ? s->materials[m->material[m->count - 1]].ior : REAL_C(1.0);
 }
 
 /* The stack after the ray crosses a surface of material `mat`: entering pushes it,
  * leaving removes its innermost entry (or nothing, if the ray was not known inside).
- * Apart (REAL_APART): inlined into trace_ray it cost 20 bytes more M0 flash. */
-REAL_APART static void media_cross(const media *m, int mat, int entering, media *next)
+ * Apart (RT_APART): inlined into trace_ray it cost 20 bytes more M0 flash. */
+RT_APART static void media_cross(const media *m, int mat, int entering, media *next)
 {
 	int i, skip = -1;
 	*next = *m;
@@ -142,7 +142,7 @@ static vec3 departure_point(departure *d)
  * number of the type, and so is the light's offset from it; that offset times per_t,
  * (light - origin) per_t - dir, is not, and points the same way. A function of its own on
  * the M0: inlined, its numbers took room in every level of the recursion's stack. */
-REAL_APART static vec3 horizon_to_light(const light *l, const ray *r, unit per_t)
+RT_APART static vec3 horizon_to_light(const light *l, const ray *r, unit per_t)
 {
 	vec3 from_origin = vec_sub(l->position, r->origin);
 	return vec_sub(vec_make(real_mul_unit(from_origin.x, per_t),
