@@ -12,12 +12,12 @@ VARIANT_FLAGS_fixed = -DRT_REAL_FIXED $(if $(filter x86_64,$(shell uname -m)),-m
 # For hosts with little address space (README, "Memory"): a 16 MiB PNG arena (PNG up to
 # 640x480 and a little more) and 4,096 objects.
 VARIANT_FLAGS_small = -DRT_REAL_DOUBLE -DRT_PNG_ARENA_BYTES=16777216L -DRT_MAX_OBJECTS=4096
-VARIANT_FLAGS_sphere-textbook = -DRT_REAL_DOUBLE -DRT_SPHERE_TEXTBOOK=1
-VARIANT_FLAGS_hedron-per-face = -DRT_REAL_DOUBLE -DRT_HEDRON_PER_FACE=1
-VARIANT_FLAGS_offset-fixed = -DRT_REAL_DOUBLE -DRT_OFFSET_FIXED=1
-VARIANT_FLAGS_float-textbook = -DRT_REAL_FLOAT -DRT_SPHERE_TEXTBOOK=1
-VARIANT_FLAGS_float-per-face = -DRT_REAL_FLOAT -DRT_HEDRON_PER_FACE=1
-VARIANT_FLAGS_float-offset-fixed = -DRT_REAL_FLOAT -DRT_OFFSET_FIXED=1
+VARIANT_FLAGS_sphere-textbook = -DRT_REAL_DOUBLE -DRT_NAIVE=RT_NAIVE_SPHERE
+VARIANT_FLAGS_hedron-per-face = -DRT_REAL_DOUBLE -DRT_NAIVE=RT_NAIVE_HEDRON
+VARIANT_FLAGS_offset-fixed = -DRT_REAL_DOUBLE -DRT_NAIVE=RT_NAIVE_OFFSET
+VARIANT_FLAGS_float-textbook = -DRT_REAL_FLOAT -DRT_NAIVE=RT_NAIVE_SPHERE
+VARIANT_FLAGS_float-per-face = -DRT_REAL_FLOAT -DRT_NAIVE=RT_NAIVE_HEDRON
+VARIANT_FLAGS_float-offset-fixed = -DRT_REAL_FLOAT -DRT_NAIVE=RT_NAIVE_OFFSET
 TYPES = float double ref fixed
 ALGORITHMS = sphere-textbook hedron-per-face offset-fixed float-textbook float-per-face \
 	     float-offset-fixed

@@ -83,16 +83,14 @@
 #define RT_BVH_MIN_OBJECTS 12 /* scenes with fewer objects test them all: cheaper */
 #endif
 
-/* Algorithm choices, for measuring what robustness costs (tools/speed-vs-error). The
- * defaults (0) are the robust forms; 1 selects the naive form the literature warns about. */
-#ifndef RT_SPHERE_TEXTBOOK
-#define RT_SPHERE_TEXTBOOK 0 /* 1: b^2 - 4ac and -b +- sqrt, not Hearn & Baker + stable roots */
-#endif
-#ifndef RT_HEDRON_PER_FACE
-#define RT_HEDRON_PER_FACE 0 /* 1: hit a face plane, then test the point against the others */
-#endif
-#ifndef RT_OFFSET_FIXED
-#define RT_OFFSET_FIXED 0 /* 1: secondary rays start 1e-4 off the surface, whatever its scale */
+/* Algorithm choices, for measuring what robustness costs (tools/speed-vs-error, naive.h):
+ * RT_NAIVE names at most one naive form the literature warns about; 0 (the default) is
+ * the robust code throughout. */
+#define RT_NAIVE_SPHERE 1 /* b^2 - 4ac and -b +- sqrt, not Hearn & Baker + stable roots */
+#define RT_NAIVE_HEDRON 2 /* hit a face plane, then test the point against the others */
+#define RT_NAIVE_OFFSET 3 /* secondary rays start 1e-4 off the surface, whatever its scale */
+#ifndef RT_NAIVE
+#define RT_NAIVE 0
 #endif
 
 #define RT_DEFAULT_DEPTH 5 /* SPD's testing procedure uses 5 levels */

@@ -5,6 +5,8 @@
  * See LICENSE for copyright and licence. */
 #include "shape.h"
 
+#include "naive.h"
+
 void hedron_plane_init(halfspace *h, vec3 n, real2 length2, real d)
 {
 	/* Divided by the length as dir_normalize does (one reciprocal for all four). */
@@ -13,47 +15,6 @@ void hedron_plane_init(halfspace *h, vec3 n, real2 length2, real d)
 	h->offset = real_times_reciprocal(d, per_length);
 }
 
-#if RT_HEDRON_PER_FACE
-/* The per-face form, for comparison only: hit each face's plane, then keep the point if
- * it is strictly inside every other plane. Rays through edges and vertices leak, because
- * the point rounds to just outside a neighbouring plane (numerics.md section 3). */
-int hedron_intersect(const scene *s, const object *o, const ray *r, real tmin, real tmax,
-		     hit *h)
-{
-	const halfspace *planes = s->planes + o->u.hedron.first;
-	int count = o->u.hedron.count, i, j, face = -1;
-	real best = tmax;
-	for (i = 0; i < count; i++) {
-		unit vd = dir_dot(planes[i].normal, r->dir);
-		real t;
-		vec3 p;
-		if (vd == UNIT_C(0.0))
-			continue;
-		t = real_div_unit(planes[i].offset - dir_dot_vec(planes[i].normal, r->origin), vd);
-		if (!(t > tmin && t < best))
-			continue;
-		p = dir_madd(r->origin, t, r->dir);
-		for (j = 0; j < count; j++)
-			if (j != i && !(dir_dot_vec(planes[j].normal, p) - planes[j].offset < REAL_C(0.0)))
-				break;
-		if (j == count) {
-			best = t;
-			face = i;
-		}
-	}
-	if (face < 0)
-		return 0;
-	if (h) {
-		h->t = best;
-		if (!(best < HORIZON_T))
-			h->per_t = unit_over_real(UNIT_C(1.0), best);
-		h->point = dir_madd(r->origin, best, r->dir);
-		h->normal = planes[face].normal;
-		h->shading = h->normal;
-	}
-	return 1;
-}
-#else
 int hedron_intersect(const scene *s, const object *o, const ray *r, real tmin, real tmax,
 		     hit *h)
 {
@@ -63,6 +24,8 @@ int hedron_intersect(const scene *s, const object *o, const ray *r, real tmin, r
 	int near_face = -1, far_face = -1, face;
 	real t;
 
+	if (RT_NAIVE == RT_NAIVE_HEDRON)
+		return naive_hedron_intersect(s, o, r, tmin, tmax, h);
 	for (i = 0; i < count; i++) {
 		unit vd = dir_dot(planes[i].normal, r->dir);
 		real vn = -plane_gap(planes[i].normal, planes[i].offset, &r->origin);
@@ -120,4 +83,4 @@ int hedron_intersect(const scene *s, const object *o, const ray *r, real tmin, r
 	}
 	return 1;
 }
-#endif
+

@@ -4,6 +4,7 @@
  * See LICENSE for copyright and licence. */
 #include "shape.h"
 
+#include "naive.h"
 #include "quadratic.h"
 
 void sphere_init(sphere_shape *s, vec3 center, real radius)
@@ -126,47 +127,42 @@ int sphere_intersect_from(const object *o, const ray *r, const origin_term *k, r
 	 * and this costs nothing. */
 	if (c > 0 && b > REAL_C(0.0))
 		return 0;
-#if RT_SPHERE_TEXTBOOK
-	/* The textbook form, for comparison only: b^2 - c cancels for small, distant or
-	 * grazing spheres, and -b +- sqrt cancels for huge ones (numerics.md section 1). */
-	real2 discriminant = real_mul2(b, b) - c;
-	real root;
-	if (!(discriminant >= 0))
-		return 0;
-	root = real2_sqrt(discriminant);
-	t0 = -b - root;
-	t1 = -b + root;
-#else
-	/* a = |d|^2 is 1 only up to rounding (in fixed point it is |d|^2 in Q2.30 rounded to
-	 * Q16.16, so mostly exactly 1): over a long ray a unit-length assumption would put
-	 * the hit point off the surface, so the quadratic keeps its a. Perpendicular offset
-	 * of the centre from the ray line (terms of size r^2, not |f|^2); b^2 - a c =
-	 * a (r^2 - |v|^2), written as D + D (a - 1) to keep fixed point's low bits. */
-	real a;
-	vec3 v;
-	/* A clear miss by the textbook discriminant b^2 - a c (cheap: no division, no root)
-	 * is a miss: only rays that pass near the sphere take the careful path below. It
-	 * is tested with a = 1: directions are unit up to rounding, so a >= 1 - 2^-10, and
-	 * for c > 0 (outside; inside, b^2 - a c >= 0 is never a miss) b^2 - a c is then
-	 * below b^2 - c + c 2^-10. Rays that miss need neither a nor its product. Fixed
-	 * point made this test in 32-bit products already (sphere_coarse_miss), and leaves
-	 * the few clear misses that escape it to the careful path: the same images, in less
-	 * code and time than the exact test's 64-bit products. */
+	if (RT_NAIVE == RT_NAIVE_SPHERE) {
+		if (!naive_sphere_roots(b, c, &t0, &t1))
+			return 0;
+	} else {
+		/* a = |d|^2 is 1 only up to rounding (in fixed point it is |d|^2 in Q2.30
+		 * rounded to Q16.16, so mostly exactly 1): over a long ray a unit-length
+		 * assumption would put the hit point off the surface, so the quadratic
+		 * keeps its a. Perpendicular offset of the centre from the ray line (terms
+		 * of size r^2, not |f|^2); b^2 - a c = a (r^2 - |v|^2), written as D + D
+		 * (a - 1) to keep fixed point's low bits. */
+		real a;
+		vec3 v;
+		/* A clear miss by the textbook discriminant b^2 - a c (cheap: no division,
+		 * no root) is a miss: only rays that pass near the sphere take the careful
+		 * path below. It is tested with a = 1: directions are unit up to rounding,
+		 * so a >= 1 - 2^-10, and for c > 0 (outside; inside, b^2 - a c >= 0 is
+		 * never a miss) b^2 - a c is then below b^2 - c + c 2^-10. Rays that miss
+		 * need neither a nor its product. Fixed point made this test in 32-bit
+		 * products already (sphere_coarse_miss), and leaves the few clear misses
+		 * that escape it to the careful path: the same images, in less code and
+		 * time than the exact test's 64-bit products. */
 #if !REAL_FIXED
-	if (c > 0 && real_mul2(b, b) - c < -(real2_error_bound(b, c) + real2_unit_slack(c)))
-		return 0;
+		if (c > 0 && real_mul2(b, b) - c < -(real2_error_bound(b, c) + real2_unit_slack(c)))
+			return 0;
 #endif
-	a = unit_to_real(dir_dot(r->dir, r->dir));
-	/* a = 1 exactly (often, in every type) divides by nothing and scales by nothing:
-	 * the same numbers without the division and the product. */
-	v = dir_madd(*f, a == REAL_C(1.0) ? -b : -real_div(b, a), r->dir);
-	real2 perpendicular = s->radius2 - vec_dot2(v, v);
-	real2 discriminant = perpendicular;
-	if (a != REAL_C(1.0))
-		discriminant += real2_scale(perpendicular, a - REAL_C(1.0));
-	if (!solve_quadratic(a, b, c, discriminant, &t0, &t1))
-		return 0;
-#endif
+		a = unit_to_real(dir_dot(r->dir, r->dir));
+		/* a = 1 exactly (often, in every type) divides by nothing and scales by nothing:
+		 * the same numbers without the division and the product. */
+		v = dir_madd(*f, a == REAL_C(1.0) ? -b : -real_div(b, a), r->dir);
+		real2 perpendicular = s->radius2 - vec_dot2(v, v);
+		real2 discriminant = perpendicular;
+		if (a != REAL_C(1.0))
+			discriminant += real2_scale(perpendicular, a - REAL_C(1.0));
+		if (!solve_quadratic(a, b, c, discriminant, &t0, &t1))
+			return 0;
+	}
 	/* The near root enters, the far root leaves; an inside-only sphere shows only exits. */
 	if (t0 > tmin && t0 < tmax && !(o->flags & OBJ_INSIDE_ONLY))
 		t = t0;

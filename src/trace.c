@@ -13,6 +13,7 @@
  * See LICENSE for copyright and licence. */
 #include "trace.h"
 
+#include "naive.h"
 #include "optics.h"
 
 /* Colours are bounded so that sums of them (64 lights, a mirror and a refracted ray,
@@ -65,19 +66,14 @@ void tracer_init(tracer *t, const scene *s, int depth, real cutoff)
 /* How far rays leave a hit point. */
 static real offset_size(const hit *h)
 {
-#if RT_OFFSET_FIXED
-	/* The classic fixed epsilon, for comparison only: too small far from the origin,
-	 * too large for small objects (numerics.md section 2). */
-	(void)h;
-	return REAL_C(1e-4);
-#else
+	if (RT_NAIVE == RT_NAIVE_OFFSET)
+		return naive_offset();
 	/* The hit point's rounding error scales with its own size and the ray's length, not
 	 * with the unit of length: a scene modelled in metres with 50 um parts needs offsets
 	 * far below 1e-4. The small floor keeps a point at the origin off its surface. */
 	real scale = real_max(REAL_C(0.0009765625),
 			      real_max(vec_max_abs(h->point), real_fabs(h->t)));
 	return real_surface_offset(scale, h->rough);
-#endif
 }
 
 vec3 trace_offset(const hit *h, dir3 side)
