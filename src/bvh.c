@@ -4,6 +4,7 @@
  * See LICENSE for copyright and licence. */
 #include "bvh.h"
 
+#include "box.h"
 #include "intersect.h"
 
 #if RT_USE_BVH
@@ -18,112 +19,8 @@ RT_STATIC_ASSERT(node_count_fits, 2 * (long)RT_MAX_OBJECTS < 2147483647L);
 /* Build scratch: each object's bounds and their centre. */
 static vec3 object_lo[RT_MAX_OBJECTS], object_hi[RT_MAX_OBJECTS], centre[RT_MAX_OBJECTS];
 
-static void grow(vec3 *lo, vec3 *hi, vec3 p)
-{
-	lo->x = real_min(lo->x, p.x);
-	lo->y = real_min(lo->y, p.y);
-	lo->z = real_min(lo->z, p.z);
-	hi->x = real_max(hi->x, p.x);
-	hi->y = real_max(hi->y, p.y);
-	hi->z = real_max(hi->z, p.z);
-}
 
-static void empty_box(vec3 *lo, vec3 *hi)
-{
-	*lo = vec_make(REAL_MAX, REAL_MAX, REAL_MAX);
-	*hi = vec_neg(*lo);
-}
 
-/* Corners of a convex polyhedron: every point where three planes meet and that lies
- * inside all the others. The planes are first closed by a huge box; a corner on that box
- * means the polyhedron is unbounded (returns 0). */
-static int hedron_bounds(const scene *s, const object *o, vec3 *lo, vec3 *hi)
-{
-	halfspace planes[RT_MAX_HEDRON_PLANES + 6];
-	vec3 normal[RT_MAX_HEDRON_PLANES + 6]; /* as reals: Cramer's rule multiplies three */
-	int count = o->u.hedron.count, i, j, k, m, corners = 0;
-	/* Beyond every coordinate, and a third of REAL_FAR so that three such terms in
-	 * Cramer's rule below still fit fixed point. */
-	const real far_away = real_div(REAL_FAR, REAL_C(3.0));
-	for (i = 0; i < count; i++)
-		planes[i] = s->planes[o->u.hedron.first + i];
-	for (i = 0; i < 6; i++) {
-		unit sign = i & 1 ? UNIT_C(-1.0) : UNIT_C(1.0);
-		planes[count + i].normal = dir_make(i / 2 == 0 ? sign : UNIT_C(0.0),
-						    i / 2 == 1 ? sign : UNIT_C(0.0),
-						    i / 2 == 2 ? sign : UNIT_C(0.0));
-		planes[count + i].offset = far_away;
-	}
-	for (i = 0; i < count + 6; i++)
-		normal[i] = dir_to_vec(planes[i].normal);
-	empty_box(lo, hi);
-	for (i = 0; i < count + 6; i++)
-		for (j = i + 1; j < count + 6; j++)
-			for (k = j + 1; k < count + 6; k++) {
-				/* Cramer's rule: p = (d_i (n_j x n_k) + d_j (n_k x n_i) +
-				 * d_k (n_i x n_j)) / (n_i . (n_j x n_k)). */
-				vec3 jk = vec_cross(normal[j], normal[k]);
-				real det = vec_dot(normal[i], jk);
-				vec3 p;
-				if (!(real_fabs(det) > REAL_C(1e-9)))
-					continue;
-				p = vec_scale(jk, planes[i].offset);
-				p = vec_madd(p, planes[j].offset, vec_cross(normal[k], normal[i]));
-				p = vec_madd(p, planes[k].offset, vec_cross(normal[i], normal[j]));
-				p = vec_scale(p, real_div(REAL_C(1.0), det));
-				for (m = 0; m < count + 6; m++) {
-					real slack = real_surface_offset(real_max(REAL_C(1.0), vec_max_abs(p)), 1);
-					if (vec_dot(normal[m], p) > planes[m].offset + slack)
-						break;
-				}
-				if (m < count + 6)
-					continue;
-				if (k >= count)
-					return 0; /* a corner on the closing box: unbounded */
-				grow(lo, hi, p);
-				corners++;
-			}
-	return corners > 0;
-}
-
-/* Bounds of one object; returns 0 when it has none (infinite plane, open polyhedron). */
-static int object_bounds(const scene *s, const object *o, vec3 *lo, vec3 *hi)
-{
-	int i;
-	switch (o->kind) {
-	case SHAPE_SPHERE: {
-		real r = o->u.sphere.radius;
-		vec3 extent = vec_make(r, r, r);
-		*lo = vec_sub(o->u.sphere.center, extent);
-		*hi = vec_add(o->u.sphere.center, extent);
-		return 1;
-	}
-	case SHAPE_POLYGON:
-	case SHAPE_PATCH:
-		empty_box(lo, hi);
-		for (i = 0; i < o->u.polygon.count; i++)
-			grow(lo, hi, s->vertices[o->u.polygon.first + i]);
-		return 1;
-	case SHAPE_CONE: {
-		/* Each end circle spans r * sqrt(1 - a_i^2) along axis i. */
-		const cone_shape *c = &o->u.cone;
-		vec3 a = dir_to_vec(c->axis), apex = dir_madd(c->base, c->length, c->axis);
-		vec3 disc = vec_make(real_sqrt(real_max(REAL_C(0.0), REAL_C(1.0) - real_mul(a.x, a.x))),
-				     real_sqrt(real_max(REAL_C(0.0), REAL_C(1.0) - real_mul(a.y, a.y))),
-				     real_sqrt(real_max(REAL_C(0.0), REAL_C(1.0) - real_mul(a.z, a.z))));
-		empty_box(lo, hi);
-		grow(lo, hi, vec_madd(c->base, c->base_radius, disc));
-		grow(lo, hi, vec_madd(c->base, -c->base_radius, disc));
-		grow(lo, hi, vec_madd(apex, c->apex_radius, disc));
-		grow(lo, hi, vec_madd(apex, -c->apex_radius, disc));
-		return 1;
-	}
-	case SHAPE_HEDRON:
-		return hedron_bounds(s, o, lo, hi);
-	default:
-		return 0;
-	}
-}
 
 /* The bin (0 .. BINS-1) of a centre at `offset` past the lowest centre, out of `extent`.
  * The comparison keeps a NaN or out-of-range quotient from reaching the int conversion. */
@@ -151,9 +48,9 @@ static int sah_split(scene *s, int first, int count, vec3 node_lo, vec3 node_hi,
 	real2 node_area = half_area(node_lo, node_hi);
 	real best_cost;
 	int best_axis = -1, best_plane = 0, axis, i, left;
-	empty_box(&clo, &chi);
+	box_empty(&clo, &chi);
 	for (i = 0; i < count; i++)
-		grow(&clo, &chi, centre[index[first + i]]);
+		box_grow(&clo, &chi, centre[index[first + i]]);
 	/* Leaf cost: one intersection per object; a split costs one traversal step plus the
 	 * children's objects weighted by the chance of entering each. */
 	best_cost = REAL_MAX;
@@ -167,36 +64,36 @@ static int sah_split(scene *s, int first, int count, vec3 node_lo, vec3 node_hi,
 			continue;
 		for (i = 0; i < BINS; i++) {
 			bin_count[i] = 0;
-			empty_box(&bin_lo[i], &bin_hi[i]);
+			box_empty(&bin_lo[i], &bin_hi[i]);
 		}
 		for (i = 0; i < count; i++) {
 			int o = index[first + i];
 			int b = bin_of(vec_get(centre[o], axis) - lo, extent);
 			bin_count[b]++;
-			grow(&bin_lo[b], &bin_hi[b], object_lo[o]);
-			grow(&bin_lo[b], &bin_hi[b], object_hi[o]);
+			box_grow(&bin_lo[b], &bin_hi[b], object_lo[o]);
+			box_grow(&bin_lo[b], &bin_hi[b], object_hi[o]);
 		}
 		/* Sweep from the right, then from the left, pricing each plane between bins.
 		 * An empty bin's box is inside out (+MAX..-MAX) and must not be grown by. */
-		empty_box(&run_lo, &run_hi);
+		box_empty(&run_lo, &run_hi);
 		n = 0;
 		for (i = BINS - 1; i > 0; i--) {
 			n += bin_count[i];
 			if (bin_count[i]) {
-				grow(&run_lo, &run_hi, bin_lo[i]);
-				grow(&run_lo, &run_hi, bin_hi[i]);
+				box_grow(&run_lo, &run_hi, bin_lo[i]);
+				box_grow(&run_lo, &run_hi, bin_hi[i]);
 			}
 			right_area[i] = half_area(run_lo, run_hi);
 			right_count[i] = n;
 		}
-		empty_box(&run_lo, &run_hi);
+		box_empty(&run_lo, &run_hi);
 		n = 0;
 		for (i = 0; i < BINS - 1; i++) {
 			real cost;
 			n += bin_count[i];
 			if (bin_count[i]) {
-				grow(&run_lo, &run_hi, bin_lo[i]);
-				grow(&run_lo, &run_hi, bin_hi[i]);
+				box_grow(&run_lo, &run_hi, bin_lo[i]);
+				box_grow(&run_lo, &run_hi, bin_hi[i]);
 			}
 			if (n == 0 || right_count[i + 1] == 0)
 				continue;
@@ -244,10 +141,10 @@ static void build_node(scene *s, int node, int first, int count, int depth)
 {
 	bvh_node *n = &s->bvh_nodes[node];
 	int i, left = 0, axis = 0;
-	empty_box(&n->bounds[0], &n->bounds[1]);
+	box_empty(&n->bounds[0], &n->bounds[1]);
 	for (i = 0; i < count; i++) {
-		grow(&n->bounds[0], &n->bounds[1], object_lo[s->bvh_index[first + i]]);
-		grow(&n->bounds[0], &n->bounds[1], object_hi[s->bvh_index[first + i]]);
+		box_grow(&n->bounds[0], &n->bounds[1], object_lo[s->bvh_index[first + i]]);
+		box_grow(&n->bounds[0], &n->bounds[1], object_hi[s->bvh_index[first + i]]);
 	}
 	if (count > 1 && depth < MAX_BUILD_DEPTH) {
 		left = sah_split(s, first, count, n->bounds[0], n->bounds[1], &axis);
@@ -282,7 +179,7 @@ void bvh_build(scene *s)
 		return;
 	for (i = 0; i < s->object_count; i++) {
 		vec3 lo, hi;
-		bounded[i] = object_bounds(s, &s->objects[i], &lo, &hi) && vec_is_finite(lo) &&
+		bounded[i] = shape_bounds(s, &s->objects[i], &lo, &hi) && vec_is_finite(lo) &&
 			     vec_is_finite(hi);
 		if (bounded[i]) {
 			/* Pad by the secondary-ray offset scale so rounding never loses a hit that

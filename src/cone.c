@@ -4,6 +4,8 @@
  * See LICENSE for copyright and licence. */
 #include "shape.h"
 
+#include "box.h"
+#include "clearance.h"
 #include "quadratic.h"
 
 #if RT_SHAPE_CONE
@@ -17,6 +19,52 @@ void cone_init(cone_shape *c, vec3 base, vec3 axis, real length, real base_radiu
 	c->base_radius = base_radius;
 	c->apex_radius = apex_radius;
 	c->slope = real_div(apex_radius - base_radius, length);
+}
+
+int cone_bounds(const cone_shape *c, vec3 *lo, vec3 *hi)
+{
+	/* Each end circle spans r * sqrt(1 - a_i^2) along axis i. */
+	vec3 a = dir_to_vec(c->axis), apex = dir_madd(c->base, c->length, c->axis);
+	vec3 disc = vec_make(real_sqrt(real_max(REAL_C(0.0), REAL_C(1.0) - real_mul(a.x, a.x))),
+			     real_sqrt(real_max(REAL_C(0.0), REAL_C(1.0) - real_mul(a.y, a.y))),
+			     real_sqrt(real_max(REAL_C(0.0), REAL_C(1.0) - real_mul(a.z, a.z))));
+	box_empty(lo, hi);
+	box_grow(lo, hi, vec_madd(c->base, c->base_radius, disc));
+	box_grow(lo, hi, vec_madd(c->base, -c->base_radius, disc));
+	box_grow(lo, hi, vec_madd(apex, c->apex_radius, disc));
+	box_grow(lo, hi, vec_madd(apex, -c->apex_radius, disc));
+	return 1;
+}
+
+/* In the cone's own coordinates (z along the axis, rho from it) its surface is the
+ * segment from (0, r0) to (length, r1): no nearer than the slab 0 <= z <= length, the
+ * ring between the two radii, and the segment's line. */
+real cone_clearance(const cone_shape *g, const vec3 *p)
+{
+	vec3 w = vec_sub(*p, g->base);
+	real z = dir_dot_vec(g->axis, w);
+	real2 rho2 = vec_dot2(w, w) - real_mul2(z, z);
+	real rho = rho2 > 0 ? real2_sqrt(rho2) : REAL_C(0.0);
+	/* Radii of one sign (parse.c); the slope of their sizes. */
+	real r0 = real_fabs(g->base_radius), r1 = real_fabs(g->apex_radius);
+	real slope = g->base_radius < REAL_C(0.0) ? -g->slope : g->slope;
+	/* The line's distance is |rho - r0 - z slope| / sqrt(1 + slope^2), no less than that
+	 * over 1 + |slope|. */
+	real line = real_div(real_fabs(real_add(real_add(rho, -r0), -real_mul(z, slope))),
+			     real_add(REAL_C(1.0), real_fabs(slope)));
+	return real_max(line, real_max(clearance_outside(z, REAL_C(0.0), g->length),
+				       clearance_outside(rho, real_min(r0, r1), real_max(r0, r1))));
+}
+
+void cone_measure(const cone_shape *c, real *extent, real *feature)
+{
+	real r = real_max(c->base_radius, c->apex_radius);
+	scene_cover(extent, c->base, r);
+	scene_cover(extent, dir_madd(c->base, c->length, c->axis), r);
+	*feature = real_min(*feature, r);
+	/* A steep cone (radius changing much faster than its length) is as fine as its
+	 * length over its slope. */
+	*feature = real_min(*feature, real_div(c->length, real_max(REAL_C(1.0), real_fabs(c->slope))));
 }
 
 int cone_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h)

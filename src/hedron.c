@@ -5,6 +5,7 @@
  * See LICENSE for copyright and licence. */
 #include "shape.h"
 
+#include "box.h"
 #include "naive.h"
 
 void hedron_plane_init(halfspace *h, vec3 n, real2 length2, real d)
@@ -14,6 +15,76 @@ void hedron_plane_init(halfspace *h, vec3 n, real2 length2, real d)
 	h->normal = dir_times_reciprocal(n, per_length);
 	h->offset = real_times_reciprocal(d, per_length);
 }
+
+/* ---- bounds and clearance --------------------------------------------------------- */
+
+/* Corners of a convex polyhedron: every point where three planes meet and that lies
+ * inside all the others. The planes are first closed by a huge box; a corner on that box
+ * means the polyhedron is unbounded (returns 0). */
+int hedron_bounds(const scene *s, const hedron_shape *g, vec3 *lo, vec3 *hi)
+{
+	halfspace planes[RT_MAX_HEDRON_PLANES + 6];
+	vec3 normal[RT_MAX_HEDRON_PLANES + 6]; /* as reals: Cramer's rule multiplies three */
+	int count = g->count, i, j, k, m, corners = 0;
+	/* Beyond every coordinate, and a third of REAL_FAR so that three such terms in
+	 * Cramer's rule below still fit fixed point. */
+	const real far_away = real_div(REAL_FAR, REAL_C(3.0));
+	for (i = 0; i < count; i++)
+		planes[i] = s->planes[g->first + i];
+	for (i = 0; i < 6; i++) {
+		unit sign = i & 1 ? UNIT_C(-1.0) : UNIT_C(1.0);
+		planes[count + i].normal = dir_make(i / 2 == 0 ? sign : UNIT_C(0.0),
+						    i / 2 == 1 ? sign : UNIT_C(0.0),
+						    i / 2 == 2 ? sign : UNIT_C(0.0));
+		planes[count + i].offset = far_away;
+	}
+	for (i = 0; i < count + 6; i++)
+		normal[i] = dir_to_vec(planes[i].normal);
+	box_empty(lo, hi);
+	for (i = 0; i < count + 6; i++)
+		for (j = i + 1; j < count + 6; j++)
+			for (k = j + 1; k < count + 6; k++) {
+				/* Cramer's rule: p = (d_i (n_j x n_k) + d_j (n_k x n_i) +
+				 * d_k (n_i x n_j)) / (n_i . (n_j x n_k)). */
+				vec3 jk = vec_cross(normal[j], normal[k]);
+				real det = vec_dot(normal[i], jk);
+				vec3 p;
+				if (!(real_fabs(det) > REAL_C(1e-9)))
+					continue;
+				p = vec_scale(jk, planes[i].offset);
+				p = vec_madd(p, planes[j].offset, vec_cross(normal[k], normal[i]));
+				p = vec_madd(p, planes[k].offset, vec_cross(normal[i], normal[j]));
+				p = vec_scale(p, real_div(REAL_C(1.0), det));
+				for (m = 0; m < count + 6; m++) {
+					real slack = real_surface_offset(real_max(REAL_C(1.0), vec_max_abs(p)), 1);
+					if (vec_dot(normal[m], p) > planes[m].offset + slack)
+						break;
+				}
+				if (m < count + 6)
+					continue;
+				if (k >= count)
+					return 0; /* a corner on the closing box: unbounded */
+				box_grow(lo, hi, p);
+				corners++;
+			}
+	return corners > 0;
+}
+
+/* A convex polyhedron's surface is no nearer than its nearest plane from inside, and
+ * than its farthest plane from outside: either way |max(n.p - d)|. */
+real hedron_clearance(const scene *s, const hedron_shape *g, const vec3 *p)
+{
+	const halfspace *planes = s->planes + g->first;
+	real most = -REAL_MAX;
+	int i;
+	for (i = 0; i < g->count; i++) {
+		real side = -plane_gap(planes[i].normal, planes[i].offset, p);
+		most = real_max(most, side);
+	}
+	return real_fabs(most);
+}
+
+/* ---- intersection ------------------------------------------------------------------ */
 
 int hedron_intersect(const scene *s, const object *o, const ray *r, real tmin, real tmax,
 		     hit *h)

@@ -99,14 +99,14 @@ void origin_terms_plane(const scene *s, dir3 n, origin_terms *k)
 	}
 }
 
+RT_STATIC_ASSERT(every_shape_flat_or_convex,
+		 (SHAPE_FLAT | SHAPE_CONVEX) == (1u << SHAPE_KINDS) - 1 && !(SHAPE_FLAT & SHAPE_CONVEX));
+
 int object_can_rehit(const scene *s, int index, int front)
 {
-	int kind = s->objects[index].kind;
-	if (kind == SHAPE_PLANE || kind == SHAPE_POLYGON || kind == SHAPE_PATCH)
-		return 0;
-	/* The others bound a convex solid: a sphere, a polyhedron, a cone's frustum (both
-	 * radii have one sign, parse.c). */
-	return !front;
+	/* A flat one never; a convex solid only from inside. Every kind is one or the other
+	 * (checked below): a shape that is neither would be met again from outside too. */
+	return !shape_is(SHAPE_FLAT, s->objects[index].kind) && !front;
 }
 
 int scene_intersect(const scene *s, const ray *r, real tmax, hit *h)
@@ -138,7 +138,7 @@ int scene_intersect_from(const scene *s, const ray *r, const origin_terms *k, in
 	}
 	if (found) {
 		face_forward(r, h);
-		h->rough = s->objects[h->object].kind == SHAPE_CONE;
+		h->rough = (int)shape_is(SHAPE_ROUGH, s->objects[h->object].kind);
 	}
 	return found;
 }

@@ -14,6 +14,11 @@ void plane_init(plane_shape *pl, const vec3 *point, vec3 normal)
 	pl->offset = dir_dot_vec(pl->normal, *point);
 }
 
+void plane_measure(const plane_shape *pl, real *extent)
+{
+	*extent = real_max(*extent, real_fabs(pl->offset));
+}
+
 real plane_gap(dir3 normal, real offset, const vec3 *origin)
 {
 	return real_add(offset, -dir_dot_vec(normal, *origin));

@@ -6,6 +6,9 @@
  * See LICENSE for copyright and licence. */
 #include "shape.h"
 
+#include "box.h"
+#include "clearance.h"
+
 /* The inside test looks down the ray, as the watertight ray/triangle test of Woop, Benthin
  * and Wald (JCGT 2013) does: with z the axis of the direction's largest component (x and
  * y the next two, cyclically), a point p is seen at
@@ -227,6 +230,43 @@ void polygon_init(scene *s, polygon_shape *poly, dir3 normal, int first, int cou
 		}
 	}
 #endif
+}
+
+/* ---- bounds and clearance --------------------------------------------------------- */
+
+int polygon_bounds(const scene *s, const polygon_shape *poly, vec3 *lo, vec3 *hi)
+{
+	int i;
+	box_empty(lo, hi);
+	for (i = 0; i < poly->count; i++)
+		box_grow(lo, hi, s->vertices[poly->first + i]);
+	return 1;
+}
+
+/* How far x lies outside the vertices' range along one axis. */
+static real axis_gap(const vec3 *v, int count, int axis, real x)
+{
+	real low = vec_get(v[0], axis), high = low;
+	int i;
+	for (i = 1; i < count; i++) {
+		real c = vec_get(v[i], axis);
+		low = real_min(low, c);
+		high = real_max(high, c);
+	}
+	return clearance_outside(x, low, high);
+}
+
+/* A polygon lies in its plane and in the box of its vertices. */
+real polygon_clearance(const scene *s, const polygon_shape *g, const vec3 *p)
+{
+	const vec3 *v = s->vertices + g->first;
+	real most = real_fabs(plane_gap(g->normal, g->offset, p));
+	int axis;
+	for (axis = 0; axis < 3; axis++) {
+		real gap = axis_gap(v, g->count, axis, vec_get(*p, axis));
+		most = real_max(most, gap);
+	}
+	return most;
 }
 
 /* ---- intersection --------------------------------------------------------------- */

@@ -2,6 +2,8 @@
  * See LICENSE for copyright and licence. */
 #include "scene.h"
 
+#include "shape.h"
+
 #include <string.h>
 
 void scene_init(scene *s, const char *file)
@@ -19,8 +21,7 @@ void scene_init(scene *s, const char *file)
 	s->vertex_count = s->plane_count = 0;
 }
 
-/* Grows *extent to cover every coordinate of p, and r beyond it. */
-static void cover(real *extent, vec3 p, real r)
+void scene_cover(real *extent, vec3 p, real r)
 {
 	*extent = real_max(*extent, real_add(vec_max_abs(p), r));
 }
@@ -30,31 +31,16 @@ void scene_measure(const scene *s, real *extent, real *feature)
 	int i;
 	*extent = REAL_C(0.0);
 	*feature = REAL_MAX;
-	cover(extent, s->camera.from, REAL_C(0.0));
-	cover(extent, s->camera.at, REAL_C(0.0));
+	scene_cover(extent, s->camera.from, REAL_C(0.0));
+	scene_cover(extent, s->camera.at, REAL_C(0.0));
 	for (i = 0; i < s->light_count; i++)
-		cover(extent, s->lights[i].position, REAL_C(0.0));
+		scene_cover(extent, s->lights[i].position, REAL_C(0.0));
+	/* Polygons and polyhedra through their pools of vertices and planes; the other
+	 * shapes measure themselves. */
 	for (i = 0; i < s->vertex_count; i++)
-		cover(extent, s->vertices[i], REAL_C(0.0));
+		scene_cover(extent, s->vertices[i], REAL_C(0.0));
 	for (i = 0; i < s->plane_count; i++)
 		*extent = real_max(*extent, real_fabs(s->planes[i].offset));
-	for (i = 0; i < s->object_count; i++) {
-		const object *o = &s->objects[i];
-		if (o->kind == SHAPE_SPHERE) {
-			cover(extent, o->u.sphere.center, o->u.sphere.radius);
-			*feature = real_min(*feature, o->u.sphere.radius);
-		} else if (RT_SHAPE_CONE && o->kind == SHAPE_CONE) {
-			real r = real_max(o->u.cone.base_radius, o->u.cone.apex_radius);
-			cover(extent, o->u.cone.base, r);
-			cover(extent, dir_madd(o->u.cone.base, o->u.cone.length, o->u.cone.axis), r);
-			*feature = real_min(*feature, r);
-			/* A steep cone (radius changing much faster than its length) is as fine
-			 * as its length over its slope. */
-			*feature = real_min(*feature,
-					    real_div(o->u.cone.length,
-						     real_max(REAL_C(1.0), real_fabs(o->u.cone.slope))));
-		} else if (o->kind == SHAPE_PLANE) {
-			*extent = real_max(*extent, real_fabs(o->u.plane.offset));
-		}
-	}
+	for (i = 0; i < s->object_count; i++)
+		shape_measure(&s->objects[i], extent, feature);
 }

@@ -30,7 +30,8 @@ enum shape_kind {
 	SHAPE_PATCH,   /* NFF pp: planar polygon with per-vertex normals */
 	SHAPE_CONE,    /* NFF c: uncapped cone or cylinder */
 	SHAPE_HEDRON,  /* extension: convex polyhedron as an intersection of half-spaces */
-	SHAPE_PLANE    /* extension: infinite plane */
+	SHAPE_PLANE,   /* extension: infinite plane */
+	SHAPE_KINDS
 };
 
 /* Object flags. */
@@ -147,6 +148,9 @@ typedef struct {
 
 /* Clears a scene to NFF's defaults (black background, no ambient, default depth). */
 void scene_init(scene *s, const char *file);
+
+/* Grows *extent to cover every coordinate of p, and r beyond it. */
+void scene_cover(real *extent, vec3 p, real r);
 
 /* The scene's extent (largest coordinate of any object, light or the camera, in
  * magnitude) and its smallest feature (the smallest sphere or cone radius, cone length,

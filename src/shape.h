@@ -63,6 +63,47 @@ void hedron_plane_init(halfspace *h, vec3 n, real2 length2, real d);
 /* Sets the plane through `point` with normal `normal` (not zero). */
 void plane_init(plane_shape *pl, const vec3 *point, vec3 normal);
 
+/* ---- what each kind is, and the operations that dispatch on it (shape.c) ------------- */
+
+/* The table of what each kind is, by column: each property is the set of the kinds that
+ * have it (bit k for kind k), so that asking costs a shift, not a load. */
+#define SHAPE_KIND(k) (1u << (k))
+/* Lies in one plane: a line meets it once. */
+#define SHAPE_FLAT (SHAPE_KIND(SHAPE_POLYGON) | SHAPE_KIND(SHAPE_PATCH) | SHAPE_KIND(SHAPE_PLANE))
+/* Bounds a convex solid (a cone: a frustum, its radii of one sign): a ray leaving it
+ * outwards never returns. */
+#define SHAPE_CONVEX (SHAPE_KIND(SHAPE_SPHERE) | SHAPE_KIND(SHAPE_CONE) | SHAPE_KIND(SHAPE_HEDRON))
+/* Encloses a volume: the eye may be inside it. */
+#define SHAPE_CLOSED (SHAPE_KIND(SHAPE_SPHERE) | SHAPE_KIND(SHAPE_HEDRON))
+/* Hit points only as good as Q16.16's quadratic: rays leave them by the larger offset
+ * (tolerance.h). */
+#define SHAPE_ROUGH SHAPE_KIND(SHAPE_CONE)
+/* Has kind `kind` the property? */
+#define shape_is(property, kind) ((property) >> (kind) & 1u)
+
+/* The object's bounding box; 0 when it has none (an infinite plane, an open polyhedron). */
+int shape_bounds(const scene *s, const object *o, vec3 *lo, vec3 *hi);
+
+/* No more than the distance from p to the object's surface (up to rounding). */
+real shape_clearance(const scene *s, const object *o, const vec3 *p);
+
+/* Grows the scene's extent by the object, and shrinks its smallest feature (scene.h);
+ * polygons and polyhedra are measured through the scene's pools. */
+void shape_measure(const object *o, real *extent, real *feature);
+
+/* Each shape's own: bounds, clearance and measure, as above. */
+int sphere_bounds(const sphere_shape *s, vec3 *lo, vec3 *hi);
+real sphere_clearance(const sphere_shape *s, const vec3 *p);
+void sphere_measure(const sphere_shape *s, real *extent, real *feature);
+int polygon_bounds(const scene *s, const polygon_shape *poly, vec3 *lo, vec3 *hi);
+real polygon_clearance(const scene *s, const polygon_shape *g, const vec3 *p);
+int cone_bounds(const cone_shape *c, vec3 *lo, vec3 *hi);
+real cone_clearance(const cone_shape *g, const vec3 *p);
+void cone_measure(const cone_shape *c, real *extent, real *feature);
+int hedron_bounds(const scene *s, const hedron_shape *g, vec3 *lo, vec3 *hi);
+real hedron_clearance(const scene *s, const hedron_shape *g, const vec3 *p);
+void plane_measure(const plane_shape *pl, real *extent);
+
 /* ---- intersection ------------------------------------------------------------------ */
 
 int sphere_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h);

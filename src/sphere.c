@@ -20,6 +20,27 @@ void sphere_init(sphere_shape *s, vec3 center, real radius)
 #endif
 }
 
+int sphere_bounds(const sphere_shape *s, vec3 *lo, vec3 *hi)
+{
+	real r = s->radius;
+	vec3 extent = vec_make(r, r, r);
+	*lo = vec_sub(s->center, extent);
+	*hi = vec_add(s->center, extent);
+	return 1;
+}
+
+real sphere_clearance(const sphere_shape *s, const vec3 *p)
+{
+	vec3 f = vec_sub(*p, s->center);
+	return real_fabs(real2_sqrt(vec_dot2(f, f)) - s->radius);
+}
+
+void sphere_measure(const sphere_shape *s, real *extent, real *feature)
+{
+	scene_cover(extent, s->center, s->radius);
+	*feature = real_min(*feature, s->radius);
+}
+
 int sphere_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h)
 {
 	return sphere_intersect_from(o, r, NULL, tmin, tmax, h);

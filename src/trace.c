@@ -52,7 +52,7 @@ void tracer_init(tracer *t, const scene *s, int depth, real cutoff)
 		hit h;
 		if (s->materials[o->material].kt <= REAL_C(0.0))
 			continue;
-		if (o->kind != SHAPE_SPHERE && o->kind != SHAPE_HEDRON)
+		if (!shape_is(SHAPE_CLOSED, o->kind))
 			continue;
 		probe.origin = s->camera.from;
 		probe.dir = dir_make(UNIT_C(0.0), UNIT_C(0.0), UNIT_C(1.0));

@@ -7,6 +7,7 @@
 #include <stdio.h>
 
 #include "clearance.h"
+#include "shape.h"
 #include "support.h"
 #include "test.h"
 
@@ -96,7 +97,7 @@ static void test_lower_bounds(void)
 					vec3 p = vec_make(test_scaled(x, s.length_shift),
 							  test_scaled(y, s.length_shift),
 							  test_scaled(z, s.length_shift));
-					double c = test_double(object_clearance(&s, &s.objects[0], &p)) / scale_of;
+					double c = test_double(shape_clearance(&s, &s.objects[0], &p)) / scale_of;
 					points++;
 					/* Rounding: the type's, or 8 Q16.16 steps at the scene's scale. */
 					above += c > d * (1.0 + 1e-5) + TOL3(1e-5, 1e-12, 8 * LSB / scale_of);

@@ -1,0 +1,26 @@
+/* box.h - axis-aligned boxes as two corners: the bounds each shape gives the BVH.
+ * See LICENSE for copyright and licence. */
+#ifndef RT_BOX_H
+#define RT_BOX_H
+
+#include "vec.h"
+
+/* A box that holds nothing: every point grows it. */
+static inline void box_empty(vec3 *lo, vec3 *hi)
+{
+	*lo = vec_make(REAL_MAX, REAL_MAX, REAL_MAX);
+	*hi = vec_neg(*lo);
+}
+
+/* Grows the box to hold p. */
+static inline void box_grow(vec3 *lo, vec3 *hi, vec3 p)
+{
+	lo->x = real_min(lo->x, p.x);
+	lo->y = real_min(lo->y, p.y);
+	lo->z = real_min(lo->z, p.z);
+	hi->x = real_max(hi->x, p.x);
+	hi->y = real_max(hi->y, p.y);
+	hi->z = real_max(hi->z, p.z);
+}
+
+#endif
