@@ -60,7 +60,7 @@ static void face_forward(const ray *r, hit *h)
 		h->shading = dir_neg(h->shading);
 }
 
-void origin_term_init(const object *o, vec3 origin, origin_term *k)
+void object_origin_term(const object *o, vec3 origin, origin_term *k)
 {
 	if (o->kind == SHAPE_SPHERE) {
 		k->f = vec_sub(origin, o->u.sphere.center);
@@ -75,7 +75,7 @@ void origin_terms_init(const scene *s, vec3 origin, origin_terms *k)
 	int i;
 	k->candidates = ~(uint32_t)0;
 	for (i = 0; i < s->object_count; i++)
-		origin_term_init(&s->objects[i], origin, &k->terms[i]);
+		object_origin_term(&s->objects[i], origin, &k->terms[i]);
 }
 
 void origin_terms_plane(const scene *s, dir3 n, origin_terms *k)

@@ -14,7 +14,7 @@ int object_intersect_from(const scene *s, int index, const ray *r, const origin_
 			  real tmin, real tmax, hit *h);
 
 /* Fills k for an object and an origin (nothing for shapes without such terms). */
-void origin_term_init(const object *o, vec3 origin, origin_term *k);
+void object_origin_term(const object *o, vec3 origin, origin_term *k);
 
 /* Nearest hit along r in (0, tmax). On a hit, h's normals face the ray (h->front says
  * from which side it came). */

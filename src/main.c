@@ -351,7 +351,7 @@ int main(int argc, char **argv)
 		return 1;
 	}
 	depth = opt.spd ? 5 : opt.depth ? opt.depth : the_scene.depth;
-	tracer_init(&the_tracer, &the_scene, depth, opt.spd ? REAL_C(0.0) : the_scene.cutoff);
+	trace_init(&the_tracer, &the_scene, depth, opt.spd ? REAL_C(0.0) : the_scene.cutoff);
 	if (!output_open(&out, opt.output_path))
 		return 1;
 	switch (opt.format) {

@@ -14,11 +14,11 @@ static void trace_corner_row(tracer *t, const camera *c, int y, vec3 *out)
 {
 	int x;
 	camera_line line = camera_line_at(c, 2 * y, 0);
-	tracer_eye_line(t, line.normal);
+	trace_eye_line(t, line.normal);
 	for (x = 0; x <= c->width; x++) {
 		ray r;
 		camera_next_ray(&line, &r);
-		out[x] = tracer_eye(t, &r, NULL);
+		out[x] = trace_eye(t, &r, NULL);
 	}
 }
 
@@ -47,11 +47,11 @@ int render_image(tracer *t, const camera *c, enum render_sampling sampling, int 
 			top = RT_CORNER_SAMPLING - top;
 		} else {
 			camera_line line = camera_line_at(c, 2 * y + 1, 1);
-			tracer_eye_line(t, line.normal);
+			trace_eye_line(t, line.normal);
 			for (x = 0; x < c->width; x++) {
 				ray r;
 				camera_next_ray(&line, &r);
-				rows[0][x] = tracer_eye(t, &r, &row_ids[x]);
+				rows[0][x] = trace_eye(t, &r, &row_ids[x]);
 			}
 			done = rows[0];
 		}

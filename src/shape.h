@@ -118,7 +118,7 @@ typedef struct {
 	} u;
 } origin_term;
 
-/* origin_term_init (intersect.h) fills them. */
+/* object_origin_term (intersect.h) fills them. */
 
 #if REAL_FIXED
 /* 1 only when the sphere test's clear-miss tests would reject the ray with unit

@@ -30,7 +30,7 @@ RT_APART static vec3 bounded(vec3 c)
 /* Mirror weights stay below 1 so two facing mirrors still fade out. */
 #define MIRROR_MAX REAL_C(0.99609375) /* 255/256 */
 
-void tracer_init(tracer *t, const scene *s, int depth, real cutoff)
+void trace_init(tracer *t, const scene *s, int depth, real cutoff)
 {
 	int i;
 	t->scene = s;
@@ -346,12 +346,12 @@ static vec3 trace_ray(tracer *t, const ray *r, int skip, int level, real weight,
 	return bounded(color);
 }
 
-void tracer_eye_line(tracer *t, dir3 n)
+void trace_eye_line(tracer *t, dir3 n)
 {
 	origin_terms_plane(t->scene, n, &t->eye);
 }
 
-vec3 tracer_eye(tracer *t, const ray *r, int *hit_object)
+vec3 trace_eye(tracer *t, const ray *r, int *hit_object)
 {
 	int first;
 	vec3 color = trace_ray(t, r, -1, 1, REAL_C(1.0), &t->eye_media, &first);

@@ -30,19 +30,19 @@ typedef struct {
 	vec3 ambient[RT_MAX_MATERIALS]; /* each material's ambient light, made once */
 } tracer;
 
-void tracer_init(tracer *t, const scene *s, int depth, real cutoff);
+void trace_init(tracer *t, const scene *s, int depth, real cutoff);
 
 /* The eye rays that follow lie in the plane through the eye with unit normal n (an
  * image line's, camera_line.normal): objects the plane misses are not looked for. */
-void tracer_eye_line(tracer *t, dir3 n);
+void trace_eye_line(tracer *t, dir3 n);
 
 /* Colour seen along an eye ray, from the camera (linear, not clamped). *hit_object gets
  * the index of the first object hit, or -1; it may be NULL. */
-vec3 tracer_eye(tracer *t, const ray *r, int *hit_object);
+vec3 trace_eye(tracer *t, const ray *r, int *hit_object);
 
 /* The offset origin of a ray leaving the hit h on the side `side` points to: moved by
  * REAL_OFFSET times the scale of the hit point's rounding error (numerics.md section 2),
- * in fixed point by the larger offset when the hit is rough (real.h). */
+ * in fixed point by the larger offset when the hit is rough (tolerance.h). */
 vec3 trace_offset(const hit *h, dir3 side);
 
 #endif

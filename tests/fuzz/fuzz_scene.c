@@ -49,7 +49,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 		if (!camera_init(&cam, &fuzz_scene.camera, 6, 4)) {
 			ppm_sink ppm;
 			preview_sink ansi;
-			tracer_init(&fuzz_tracer, &fuzz_scene, fuzz_scene.depth, fuzz_scene.cutoff);
+			trace_init(&fuzz_tracer, &fuzz_scene, fuzz_scene.depth, fuzz_scene.cutoff);
 			ppm_sink_init(&ppm, discard, NULL);
 			render_image(&fuzz_tracer, &cam, SAMPLE_CORNERS, 0, cam.height, &ppm.base,
 				     NULL, NULL);
