@@ -1,13 +1,14 @@
 /* parse.c - the scene language: one function per NFF command (and rt's extensions),
- * found through a table of command names, each reading its numbers through the lexer
- * and handing them to the shape's set-up. Every error names the file and line and says
- * what was expected. The grammar is documented in docs/scene.md.
+ * found through a table of command names, each reading its numbers through the lexer;
+ * the commands that make shapes are in parse_shape.c. Every error names the file and
+ * line and says what was expected. The grammar is documented in docs/scene.md.
  * See LICENSE for copyright and licence. */
 #include "parse.h"
 
 #include <string.h>
 
 #include "colour.h"
+#include "parser.h"
 #include "shape.h"
 
 /* The Phong exponent: beyond what the build holds it only gets sharper, so it is held at
@@ -25,21 +26,9 @@ static int read_shine(lexer *lx, real *out)
 	return lexer_read_nonnegative(lx, "material Shine", out);
 }
 
-/* ---- scene building ------------------------------------------------------------ */
+/* ---- the parser's helpers (parser.h) --------------------------------------------- */
 
-typedef struct {
-	lexer lx;
-	scene *s;
-	int material;     /* current material index, -1 before the first `f` */
-	vec3 absorb;      /* absorption for the next `f` */
-	int view_line;    /* line of `v`, 0 if none yet */
-	int unlit_lights; /* lights given without a colour */
-	int light_has_color[RT_MAX_LIGHTS];
-} parser;
-
-/* Reported at the line of the entity that does not fit, naming the macro and its value.
- * One copy for its five callers (RT_APART): 48 bytes less M0 flash. */
-RT_APART static int capacity_error(parser *p, int line, const char *what, const char *limit, long value)
+int parser_capacity_error(parser *p, int line, const char *what, const char *limit, long value)
 {
 	return lexer_fail(&p->lx, line,
 		    "too many %s: the limit is %s = %ld (raise it in src/config.h)", what, limit,
@@ -65,15 +54,13 @@ static int intern_material(parser *p, const material *m, int line)
 		if (same_material(&s->materials[i], m))
 			return i;
 	if (s->material_count == RT_MAX_MATERIALS)
-		return capacity_error(p, line, "materials", "RT_MAX_MATERIALS", RT_MAX_MATERIALS),
+		return parser_capacity_error(p, line, "materials", "RT_MAX_MATERIALS", RT_MAX_MATERIALS),
 		       -1;
 	s->materials[s->material_count] = *m;
 	return s->material_count++;
 }
 
-/* A new object slot with the current material (white diffuse before any `f`), for the
- * entity on `line`. It is counted at once: its entity sets it up and cannot fail after. */
-static object *new_object(parser *p, unsigned char kind, int line)
+object *parser_new_object(parser *p, unsigned char kind, int line)
 {
 	scene *s = p->s;
 	object *o;
@@ -88,7 +75,7 @@ static object *new_object(parser *p, unsigned char kind, int line)
 			return NULL;
 	}
 	if (s->object_count == RT_MAX_OBJECTS) {
-		capacity_error(p, line, "objects", "RT_MAX_OBJECTS", RT_MAX_OBJECTS);
+		parser_capacity_error(p, line, "objects", "RT_MAX_OBJECTS", RT_MAX_OBJECTS);
 		return NULL;
 	}
 	o = &s->objects[s->object_count++];
@@ -107,23 +94,12 @@ static object *new_object(parser *p, unsigned char kind, int line)
  * all zero) whose squared length underflows. */
 static const char too_small[] = "too small to represent in " REAL_NAME;
 
-/* "zero", or why it is zero when it is not exactly (see too_small): a number read as 0 on
- * or after `line` (where the entity, or the polyhedron's row, starts), or `nonzero`, a
- * vector that is not all zero where the squares of numbers can underflow (not_all_zero).
- * One copy for its three callers (RT_APART). */
-RT_APART static const char *zero_word(const parser *p, int line, int nonzero)
+const char *parser_zero_word(const parser *p, int line, int nonzero)
 {
 	return p->lx.tiny_line >= line || nonzero ? too_small : "zero";
 }
 
-/* Is v not all zero, where that can mean its squared length underflowed (in fixed point
- * products are exact: never)? */
-static int not_all_zero(vec3 v)
-{
-	return REAL_SQUARES_UNDERFLOW && (v.x != 0 || v.y != 0 || v.z != 0);
-}
-
-static void warn(parser *p, int line, const char *what)
+void parser_warn(parser *p, int line, const char *what)
 {
 	diag_warning(p->lx.file, line, "%s; skipped", what);
 }
@@ -184,7 +160,7 @@ static int parse_view(parser *p)
 		dir3 side = dir_cross(dir_normalize(dir), dir_normalize(v->up));
 		if (!(vec_dot2(dir, dir) > 0))
 			return lexer_fail(&p->lx, p->view_line, "view: the distance from 'from' to 'at' is %s",
-				    zero_word(p, p->view_line, not_all_zero(dir)));
+				    parser_zero_word(p, p->view_line, parser_not_all_zero(dir)));
 		if (!(unit_sqrt(dir_dot(side, side)) > UNIT_C(1e-9)))
 			return lexer_fail(&p->lx, p->view_line,
 				    "view: 'up' is zero or parallel to the view direction");
@@ -210,7 +186,7 @@ static int parse_light(parser *p)
 	int line = p->lx.tok_line;
 	light *l;
 	if (s->light_count == RT_MAX_LIGHTS)
-		return capacity_error(p, line, "lights", "RT_MAX_LIGHTS", RT_MAX_LIGHTS);
+		return parser_capacity_error(p, line, "lights", "RT_MAX_LIGHTS", RT_MAX_LIGHTS);
 	l = &s->lights[s->light_count];
 	if (!lexer_read_triple(&p->lx, "light position", 1, &l->position))
 		return 0;
@@ -260,210 +236,6 @@ static int parse_material(parser *p)
 	return 1;
 }
 
-static int parse_sphere(parser *p)
-{
-	int line = p->lx.tok_line;
-	vec3 center;
-	real radius;
-	object *o;
-	if (!lexer_read_triple(&p->lx, "sphere centre", 1, &center) ||
-	    !lexer_read_value(&p->lx, "sphere radius", 1, &radius))
-		return 0;
-	if (radius == REAL_C(0.0)) {
-		warn(p, line, "sphere with radius 0");
-		return 1;
-	}
-	o = new_object(p, SHAPE_SPHERE, line);
-	if (!o)
-		return 0;
-	/* NFF: a negative radius shows only the inside. */
-	if (radius < REAL_C(0.0)) {
-		o->flags |= OBJ_INSIDE_ONLY;
-		radius = -radius;
-	}
-	sphere_init(&o->u.sphere, center, radius);
-	return 1;
-}
-
-/* `p n` or `pp n` followed by n vertices (pp: each with its normal). Apart (RT_APART):
- * inlined into the entity loop it cost 48 bytes more M0 flash. */
-RT_APART static int parse_polygon(parser *p, int patch)
-{
-	scene *s = p->s;
-	int line = p->lx.tok_line, i, first = s->vertex_count;
-	long count;
-	dir3 normal;
-	object *o;
-
-	if (!lexer_read_count(&p->lx, patch ? "patch vertex count" : "polygon vertex count", 3,
-			RT_MAX_POLY_VERTS, "RT_MAX_POLY_VERTS", &count))
-		return 0;
-	if (count > RT_MAX_VERTICES - s->vertex_count)
-		return capacity_error(p, line, "polygon vertices in the scene", "RT_MAX_VERTICES",
-				      RT_MAX_VERTICES);
-	for (i = 0; i < count; i++) {
-		if (!lexer_read_triple(&p->lx, patch ? "patch vertex" : "polygon vertex", 1,
-			      &s->vertices[first + i]))
-			return 0;
-#if RT_SHAPE_PATCH
-		if (patch) {
-			/* Normalised as read; a zero one stays zero until the face's is known. */
-			vec3 n;
-			if (!lexer_read_triple(&p->lx, "patch vertex normal", 0, &n))
-				return 0;
-			s->normals[first + i] = dir_normalize(n);
-		}
-#endif
-	}
-	normal = polygon_normal(s->vertices + first, (int)count);
-	if (!(dir_dot(normal, normal) > 0)) {
-		warn(p, line, patch ? "patch with zero area" : "polygon with zero area");
-		return 1;
-	}
-	o = new_object(p, patch ? SHAPE_PATCH : SHAPE_POLYGON, line);
-	if (!o)
-		return 0;
-	polygon_init(s, &o->u.polygon, normal, first, (int)count, patch);
-	s->vertex_count += (int)count;
-	return 1;
-}
-
-#if RT_SHAPE_CONE
-static int parse_cone(parser *p)
-{
-	int line = p->lx.tok_line;
-	vec3 base, apex, axis;
-	real base_radius, apex_radius, length;
-	unsigned char inside_only = 0;
-	object *o;
-	if (!lexer_read_triple(&p->lx, "cone base centre", 1, &base) ||
-	    !lexer_read_value(&p->lx, "cone base radius", 1, &base_radius) ||
-	    !lexer_read_triple(&p->lx, "cone apex centre", 1, &apex) ||
-	    !lexer_read_value(&p->lx, "cone apex radius", 1, &apex_radius))
-		return 0;
-	/* NFF: both radii negative shows only the inside. */
-	if (base_radius < REAL_C(0.0) && apex_radius <= REAL_C(0.0)) {
-		inside_only = OBJ_INSIDE_ONLY;
-		base_radius = -base_radius;
-		apex_radius = -apex_radius;
-	} else if (base_radius < REAL_C(0.0) || apex_radius < REAL_C(0.0)) {
-		/* The apex radius, read last, is still the current token: show it as written
-		 * (whatever the number type). */
-		return lexer_fail(&p->lx, line,
-			    "cone: both radii must have the same sign, got base radius %s 0 and "
-			    "apex radius %s",
-			    base_radius < REAL_C(0.0) ? "<" : ">=", p->lx.tok);
-	}
-	axis = vec_sub(apex, base);
-	length = vec_length(axis);
-	if (!(length > REAL_C(0.0))) {
-		warn(p, line, "cone with zero length");
-		return 1;
-	}
-	if (base_radius == REAL_C(0.0) && apex_radius == REAL_C(0.0)) {
-		warn(p, line, "cone with both radii 0");
-		return 1;
-	}
-	o = new_object(p, SHAPE_CONE, line);
-	if (!o)
-		return 0;
-	o->flags |= inside_only;
-	cone_init(&o->u.cone, base, axis, length, base_radius, apex_radius);
-	return 1;
-}
-#endif
-
-/* Adds the half-space n.x <= d to the plane pool, normalised; `line` is the entity's
- * (a capacity error names it; a zero normal is reported at its own row). */
-static int add_halfspace(parser *p, vec3 n, real d, int line)
-{
-	scene *s = p->s;
-	real2 length2 = vec_dot2(n, n);
-	if (!(length2 > 0))
-		return lexer_fail(&p->lx, p->lx.tok_line, "polyhedron: a plane normal is %s",
-			    zero_word(p, p->lx.tok_line, not_all_zero(n)));
-	if (s->plane_count == RT_MAX_PLANES)
-		return capacity_error(p, line, "polyhedron planes in the scene", "RT_MAX_PLANES",
-				      RT_MAX_PLANES);
-	hedron_plane_init(&s->planes[s->plane_count++], n, length2, d);
-	return 1;
-}
-
-/* Extension `polyhedron n` then n planes `nx ny nz d`: the solid where every n.x <= d. */
-static int parse_hedron(parser *p)
-{
-	int line = p->lx.tok_line, first = p->s->plane_count, i;
-	long count;
-	object *o;
-	if (!lexer_read_count(&p->lx, "polyhedron plane count", 1, RT_MAX_HEDRON_PLANES,
-			"RT_MAX_HEDRON_PLANES", &count))
-		return 0;
-	for (i = 0; i < count; i++) {
-		vec3 n;
-		real d;
-		if (!lexer_read_triple(&p->lx, "polyhedron plane normal", 0, &n) ||
-		    !lexer_read_value(&p->lx, "polyhedron plane offset", 1, &d) ||
-		    !add_halfspace(p, n, d, line))
-			return 0;
-	}
-	o = new_object(p, SHAPE_HEDRON, line);
-	if (!o)
-		return 0;
-	o->u.hedron.first = first;
-	o->u.hedron.count = (int)count;
-	return 1;
-}
-
-/* Extension `box x0 y0 z0 x1 y1 z1`: an axis-aligned box from two opposite corners. */
-static int parse_box(parser *p)
-{
-	int line = p->lx.tok_line, first = p->s->plane_count, face;
-	vec3 a, b;
-	object *o;
-	if (!lexer_read_triple(&p->lx, "box corner", 1, &a) ||
-	    !lexer_read_triple(&p->lx, "box corner", 1, &b))
-		return 0;
-	if (a.x == b.x || a.y == b.y || a.z == b.z) {
-		warn(p, line, "box with zero thickness");
-		return 1;
-	}
-	/* Face 2 axis + 0 is the upper side n.x <= hi, 2 axis + 1 the lower -n.x <= -lo. */
-	for (face = 0; face < 6; face++) {
-		int axis = face >> 1;
-		real lo = real_min(vec_get(a, axis), vec_get(b, axis));
-		real hi = real_max(vec_get(a, axis), vec_get(b, axis));
-		vec3 n = vec_make(axis == 0 ? REAL_C(1.0) : REAL_C(0.0),
-				  axis == 1 ? REAL_C(1.0) : REAL_C(0.0),
-				  axis == 2 ? REAL_C(1.0) : REAL_C(0.0));
-		if (!add_halfspace(p, face & 1 ? vec_neg(n) : n, face & 1 ? -lo : hi, line))
-			return 0;
-	}
-	o = new_object(p, SHAPE_HEDRON, line);
-	if (!o)
-		return 0;
-	o->u.hedron.first = first;
-	o->u.hedron.count = 6;
-	return 1;
-}
-
-/* Extension `plane px py pz nx ny nz`: the infinite plane through p with normal n. */
-static int parse_plane(parser *p)
-{
-	int line = p->lx.tok_line;
-	vec3 point, normal;
-	object *o;
-	if (!lexer_read_triple(&p->lx, "plane point", 1, &point) ||
-	    !lexer_read_triple(&p->lx, "plane normal", 0, &normal))
-		return 0;
-	if (!(vec_dot2(normal, normal) > 0))
-		return lexer_fail(&p->lx, line, "plane: the normal is %s",
-			    zero_word(p, line, not_all_zero(normal)));
-	o = new_object(p, SHAPE_PLANE, line);
-	if (!o)
-		return 0;
-	plane_init(&o->u.plane, &point, normal);
-	return 1;
-}
 
 /* One absorption coefficient, checked before the look-ahead for more numbers moves the
  * current token on (to the next line, or to end of file). */
