@@ -41,9 +41,10 @@ static real2 half_area(vec3 lo, vec3 hi)
 /* Chooses the split of index[first .. first+count) with the lowest SAH cost over BINS
  * bins of centres per axis and partitions the objects by it. Returns the number moved to
  * the left, or 0 when a leaf is cheaper and small enough, or when all centres coincide. */
-static int sah_split(scene *s, int first, int count, vec3 node_lo, vec3 node_hi, int *axis_out)
+static int sah_split(bvh_tree *t, int first, int count, vec3 node_lo, vec3 node_hi,
+		     int *axis_out)
 {
-	int *index = s->bvh_index;
+	int *index = t->index;
 	vec3 clo, chi;
 	real2 node_area = half_area(node_lo, node_hi);
 	real best_cost;
@@ -137,17 +138,17 @@ static int sah_split(scene *s, int first, int count, vec3 node_lo, vec3 node_hi,
 
 /* Fills node `node` for index[first .. first+count) and recurses into its children.
  * Recursion depth is at most MAX_BUILD_DEPTH. */
-static void build_node(scene *s, int node, int first, int count, int depth)
+static void build_node(bvh_tree *t, int node, int first, int count, int depth)
 {
-	bvh_node *n = &s->bvh_nodes[node];
+	bvh_node *n = &t->nodes[node];
 	int i, left = 0, axis = 0;
 	box_empty(&n->bounds[0], &n->bounds[1]);
 	for (i = 0; i < count; i++) {
-		box_grow(&n->bounds[0], &n->bounds[1], object_lo[s->bvh_index[first + i]]);
-		box_grow(&n->bounds[0], &n->bounds[1], object_hi[s->bvh_index[first + i]]);
+		box_grow(&n->bounds[0], &n->bounds[1], object_lo[t->index[first + i]]);
+		box_grow(&n->bounds[0], &n->bounds[1], object_hi[t->index[first + i]]);
 	}
 	if (count > 1 && depth < MAX_BUILD_DEPTH) {
-		left = sah_split(s, first, count, n->bounds[0], n->bounds[1], &axis);
+		left = sah_split(t, first, count, n->bounds[0], n->bounds[1], &axis);
 		/* Too many objects for one leaf but no plane between their centres (all
 		 * centres equal): split the list in half. */
 		if (!left && count > MAX_LEAF) {
@@ -161,20 +162,20 @@ static void build_node(scene *s, int node, int first, int count, int depth)
 		n->axis = 0;
 		return;
 	}
-	n->start = s->bvh_node_count;
+	n->start = t->node_count;
 	n->count = 0;
 	n->axis = (short)axis;
-	s->bvh_node_count += 2;
-	build_node(s, n->start, first, left, depth + 1);
-	build_node(s, n->start + 1, first + left, count - left, depth + 1);
+	t->node_count += 2;
+	build_node(t, n->start, first, left, depth + 1);
+	build_node(t, n->start + 1, first + left, count - left, depth + 1);
 }
 
-void bvh_build(scene *s)
+void bvh_build(bvh_tree *t, const scene *s)
 {
 	static unsigned char bounded[RT_MAX_OBJECTS];
 	int i, next;
-	s->bvh_node_count = 0;
-	s->unbounded_count = 0;
+	t->node_count = 0;
+	t->unbounded_count = 0;
 	if (s->object_count < RT_BVH_MIN_OBJECTS)
 		return;
 	for (i = 0; i < s->object_count; i++) {
@@ -191,18 +192,18 @@ void bvh_build(scene *s)
 			object_hi[i] = vec_add(hi, p);
 			centre[i] = vec_scale(vec_add(object_lo[i], object_hi[i]), REAL_C(0.5));
 		} else {
-			s->bvh_index[s->unbounded_count++] = i;
+			t->index[t->unbounded_count++] = i;
 		}
 	}
 	/* Unbounded objects first, then the bounded ones the tree is built over. */
-	next = s->unbounded_count;
+	next = t->unbounded_count;
 	for (i = 0; i < s->object_count; i++)
 		if (bounded[i])
-			s->bvh_index[next++] = i;
-	if (next == s->unbounded_count)
+			t->index[next++] = i;
+	if (next == t->unbounded_count)
 		return;
-	s->bvh_node_count = 1;
-	build_node(s, 0, s->unbounded_count, s->object_count - s->unbounded_count, 0);
+	t->node_count = 1;
+	build_node(t, 0, t->unbounded_count, s->object_count - t->unbounded_count, 0);
 }
 
 /* A ray prepared for slab tests: 1/d per axis and, per axis, which box corner it meets
@@ -289,8 +290,8 @@ static inline int box_hit(const bvh_node *n, const slab_ray *r, real tmax, real 
  * compiler makes two specialised copies. Nearest: the closest hit, shrinking tmax as hits
  * are found, children visited nearest first. Shadow: the product of the kt of every
  * transmitting object crossed, stopping at the first opaque one (*found gets it, or -1). */
-static inline real traverse(const scene *s, const ray *r, int skip, real tmax, hit *h,
-			    int shadow, int *found)
+static inline real traverse(const scene *s, const bvh_tree *t, const ray *r, int skip,
+			    real tmax, hit *h, int shadow, int *found)
 {
 	struct {
 		int node;
@@ -323,8 +324,8 @@ static inline real traverse(const scene *s, const ray *r, int skip, real tmax, h
 		}                                                                             \
 	} while (0)
 
-	for (i = 0; i < s->unbounded_count; i++)
-		VISIT(s->bvh_index[i]);
+	for (i = 0; i < t->unbounded_count; i++)
+		VISIT(t->index[i]);
 	sr.origin = r->origin;
 	sr.inv = vec_make(real_div_unit(REAL_C(1.0), r->dir.x), real_div_unit(REAL_C(1.0), r->dir.y),
 			  real_div_unit(REAL_C(1.0), r->dir.z));
@@ -336,7 +337,7 @@ static inline real traverse(const scene *s, const ray *r, int skip, real tmax, h
 	sr.divided = !(real_fabs(sr.inv.x) < RECIPROCAL_LIMIT && real_fabs(sr.inv.y) < RECIPROCAL_LIMIT &&
 		       real_fabs(sr.inv.z) < RECIPROCAL_LIMIT);
 #endif
-	if (s->bvh_node_count && box_hit(&s->bvh_nodes[0], &sr, tmax, &enter)) {
+	if (t->node_count && box_hit(&t->nodes[0], &sr, tmax, &enter)) {
 		stack[0].node = 0;
 		stack[0].enter = enter;
 		top = 1;
@@ -347,15 +348,15 @@ static inline real traverse(const scene *s, const ray *r, int skip, real tmax, h
 		/* A nearer hit found since this node was pushed may make it pointless. */
 		if (!shadow && stack[top].enter > tmax)
 			continue;
-		n = &s->bvh_nodes[stack[top].node];
+		n = &t->nodes[stack[top].node];
 		if (n->count) {
 			for (i = 0; i < n->count; i++)
-				VISIT(s->bvh_index[n->start + i]);
+				VISIT(t->index[n->start + i]);
 		} else {
 			/* Test both children here and push only those the ray enters, the
 			 * nearer one last so that it is searched first. */
-			int hit0 = box_hit(&s->bvh_nodes[n->start], &sr, tmax, &enter0);
-			int hit1 = box_hit(&s->bvh_nodes[n->start + 1], &sr, tmax, &enter1);
+			int hit0 = box_hit(&t->nodes[n->start], &sr, tmax, &enter0);
+			int hit1 = box_hit(&t->nodes[n->start + 1], &sr, tmax, &enter1);
 			if (hit0 && hit1) {
 				int near = enter0 <= enter1 ? 0 : 1;
 				stack[top].node = n->start + !near;
@@ -372,16 +373,17 @@ static inline real traverse(const scene *s, const ray *r, int skip, real tmax, h
 	return pass;
 }
 
-int bvh_nearest(const scene *s, const ray *r, int skip, real tmax, hit *h)
+int bvh_nearest(const scene *s, const bvh_tree *t, const ray *r, int skip, real tmax, hit *h)
 {
 	int found;
-	(void)traverse(s, r, skip, tmax, h, 0, &found);
+	(void)traverse(s, t, r, skip, tmax, h, 0, &found);
 	return found;
 }
 
-real bvh_transmittance(const scene *s, const ray *r, int skip, real tmax, int *blocker)
+real bvh_transmittance(const scene *s, const bvh_tree *t, const ray *r, int skip, real tmax,
+		       int *blocker)
 {
-	return traverse(s, r, skip, tmax, NULL, 1, blocker);
+	return traverse(s, t, r, skip, tmax, NULL, 1, blocker);
 }
 
 #endif

@@ -3,8 +3,6 @@
  * See LICENSE for copyright and licence. */
 #include "intersect.h"
 
-#include "bvh.h"
-
 /* The shape's own test, inlined into the scene's loops below (on the M0 a call more per
  * object and ray was a tenth of all the work). Without origin terms (k NULL) the sphere
  * and plane tests make their own. */
@@ -109,18 +107,29 @@ int object_can_rehit(const scene *s, int index, int front)
 	return !shape_is(SHAPE_FLAT, s->objects[index].kind) && !front;
 }
 
-int scene_intersect(const scene *s, const ray *r, real tmax, hit *h)
+#if RT_USE_BVH
+const accel *accel_build(const scene *s)
 {
-	return scene_intersect_from(s, r, NULL, -1, tmax, h);
+	static accel the_accel; /* large: a tree of 2 RT_MAX_OBJECTS nodes */
+	the_accel.scene = s;
+	bvh_build(&the_accel.tree, s);
+	return &the_accel;
+}
+#endif
+
+int scene_intersect(const accel *a, const ray *r, real tmax, hit *h)
+{
+	return scene_intersect_from(a, r, NULL, -1, tmax, h);
 }
 
-int scene_intersect_from(const scene *s, const ray *r, const origin_terms *k, int skip,
+int scene_intersect_from(const accel *a, const ray *r, const origin_terms *k, int skip,
 			 real tmax, hit *h)
 {
+	const scene *s = accel_scene(a);
 	int i, found = 0;
 #if RT_USE_BVH
-	if (s->bvh_node_count) {
-		found = bvh_nearest(s, r, skip, tmax, h);
+	if (a->tree.node_count) {
+		found = bvh_nearest(s, &a->tree, r, skip, tmax, h);
 	} else
 #endif
 	{
@@ -143,16 +152,17 @@ int scene_intersect_from(const scene *s, const ray *r, const origin_terms *k, in
 	return found;
 }
 
-real scene_transmittance(const scene *s, const ray *r, real tmax, int skip, int *blocker)
+real scene_transmittance(const accel *a, const ray *r, real tmax, int skip, int *blocker)
 {
+	const scene *s = accel_scene(a);
 	real pass = REAL_C(1.0);
 	int i, unused;
 	if (!blocker)
 		blocker = &unused;
 	*blocker = -1;
 #if RT_USE_BVH
-	if (s->bvh_node_count)
-		return bvh_transmittance(s, r, skip, tmax, blocker);
+	if (a->tree.node_count)
+		return bvh_transmittance(s, &a->tree, r, skip, tmax, blocker);
 #endif
 	for (i = 0; i < s->object_count; i++) {
 		if (i != skip && shape_intersect(s, &s->objects[i], r, NULL, REAL_C(0.0), tmax, NULL)) {

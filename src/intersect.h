@@ -5,7 +5,27 @@
 
 #include <stdint.h>
 
+#include "bvh.h"
 #include "shape.h"
+
+/* What the queries below search: the scene, and where the build has one its BVH, built
+ * once beside it (accel_build): the scene itself stays as it was loaded. Without a BVH
+ * (the MCU build) there is nothing to add, and the scene is searched as it is. */
+#if RT_USE_BVH
+typedef struct {
+	const scene *scene;
+	bvh_tree tree;
+} accel;
+#define accel_scene(a) ((a)->scene)
+
+/* The accel the queries search for s, built once into the intersection layer's own
+ * storage (its hierarchy, for a scene large enough to need one): one scene at a time. */
+const accel *accel_build(const scene *s);
+#else
+typedef scene accel;
+#define accel_scene(a) (a)
+#define accel_build(s) ((const accel *)(s)) /* a macro: on the M0 an inline function cost flash */
+#endif
 
 /* Dispatches to the object's shape; same contract as the shapes (shape.h). */
 int object_intersect(const scene *s, int index, const ray *r, real tmin, real tmax, hit *h);
@@ -18,7 +38,7 @@ void object_origin_term(const object *o, vec3 origin, origin_term *k);
 
 /* Nearest hit along r in (0, tmax). On a hit, h's normals face the ray (h->front says
  * from which side it came). */
-int scene_intersect(const scene *s, const ray *r, real tmax, hit *h);
+int scene_intersect(const accel *a, const ray *r, real tmax, hit *h);
 
 /* Every object's terms that depend on the ray's origin alone (shape.h), for all rays
  * from one point: every eye ray starts at the camera. */
@@ -48,13 +68,13 @@ int object_can_rehit(const scene *s, int index, int front);
 
 /* scene_intersect, for a ray from k's origin (k may be NULL) that cannot meet object
  * `skip` (-1 for none): the same hit, with fewer products. */
-int scene_intersect_from(const scene *s, const ray *r, const origin_terms *k, int skip,
+int scene_intersect_from(const accel *a, const ray *r, const origin_terms *k, int skip,
 			 real tmax, hit *h);
 
 /* Fraction of light that passes along r over (0, tmax): 0 at the first opaque blocker,
  * else the product of the kt of the transmitting objects crossed, leaving out object
  * `skip` (as scene_intersect_from). *blocker (if not NULL) gets the opaque blocker's
  * index, or -1. */
-real scene_transmittance(const scene *s, const ray *r, real tmax, int skip, int *blocker);
+real scene_transmittance(const accel *a, const ray *r, real tmax, int skip, int *blocker);
 
 #endif

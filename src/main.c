@@ -7,7 +7,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "bvh.h"
 #include "camera.h"
 #include "diag.h"
 #include "load.h"
@@ -303,6 +302,7 @@ int main(int argc, char **argv)
 	const char *why;
 	int status = parse_options(argc, argv, &opt), width, height, depth, ok;
 	unsigned long long start, parsed;
+	const accel *searched; /* the scene and its hierarchy */
 
 	if (status >= 0)
 		return status;
@@ -312,9 +312,7 @@ int main(int argc, char **argv)
 	start = term_micros();
 	if (!load_scene_file(&the_scene, opt.scene_path))
 		return 1;
-#if RT_USE_BVH
-	bvh_build(&the_scene);
-#endif
+	searched = accel_build(&the_scene);
 	parsed = term_micros();
 	width = opt.width ? opt.width : the_scene.camera.width;
 	height = opt.height ? opt.height : the_scene.camera.height;
@@ -351,7 +349,7 @@ int main(int argc, char **argv)
 		return 1;
 	}
 	depth = opt.spd ? 5 : opt.depth ? opt.depth : the_scene.depth;
-	trace_init(&the_tracer, &the_scene, depth, opt.spd ? REAL_C(0.0) : the_scene.cutoff);
+	trace_init(&the_tracer, searched, depth, opt.spd ? REAL_C(0.0) : the_scene.cutoff);
 	if (!output_open(&out, opt.output_path))
 		return 1;
 	switch (opt.format) {

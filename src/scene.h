@@ -1,5 +1,5 @@
 /* scene.h - the parsed scene: fixed arrays of materials, lights and objects.
- * The parser fills it once; the tracer only reads it.
+ * The loader fills it once; nothing changes it after (the BVH is intersect.h's accel).
  * See LICENSE for copyright and licence. */
 #ifndef RT_SCENE_H
 #define RT_SCENE_H
@@ -98,14 +98,6 @@ typedef struct {
 	real u, v;
 } vec2;
 
-/* A node of the bounding volume hierarchy (bvh.c). */
-typedef struct {
-	vec3 bounds[2]; /* lower and upper corner */
-	int start;   /* leaf: first slot in scene.bvh_index; inner: left child (right = start+1) */
-	short count; /* leaf: number of objects; 0 marks an inner node */
-	short axis;  /* inner: the split axis, for front-to-back traversal */
-} bvh_node;
-
 typedef struct {
 	vec3 from, at, up;
 	real angle; /* full horizontal field of view, degrees */
@@ -135,15 +127,6 @@ typedef struct {
 	vec2 projected[RT_MAX_VERTICES]; /* vertices projected for the shading blend */
 #endif
 	halfspace planes[RT_MAX_PLANES];
-
-#if RT_USE_BVH
-	/* Built by bvh_build after parsing; bvh_node_count 0 means no hierarchy (small
-	 * scenes test every object). bvh_index[0 .. unbounded_count) are objects without
-	 * finite bounds (planes, open polyhedra), tested for every ray. */
-	int bvh_node_count, unbounded_count;
-	bvh_node bvh_nodes[2 * RT_MAX_OBJECTS];
-	int bvh_index[RT_MAX_OBJECTS];
-#endif
 } scene;
 
 /* Clears a scene to NFF's defaults (black background, no ambient, default depth). */

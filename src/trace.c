@@ -30,10 +30,11 @@ RT_APART static vec3 bounded(vec3 c)
 /* Mirror weights stay below 1 so two facing mirrors still fade out. */
 #define MIRROR_MAX REAL_C(0.99609375) /* 255/256 */
 
-void trace_init(tracer *t, const scene *s, int depth, real cutoff)
+void trace_init(tracer *t, const accel *a, int depth, real cutoff)
 {
+	const scene *s = accel_scene(a);
 	int i;
-	t->scene = s;
+	t->accel = a;
 	t->depth = depth;
 	t->cutoff = cutoff;
 	t->stats.eye_rays = t->stats.eye_hits = 0;
@@ -164,7 +165,7 @@ static real toward(vec3 to, dir3 *dir)
 static vec3 shade_lights(tracer *t, const ray *r, departure *from, const material *mat,
 			 dir3 mirror_dir, int level)
 {
-	const scene *s = t->scene;
+	const scene *s = accel_scene(t->accel);
 	const hit *h = from->h;
 	vec3 sum = t->ambient[s->objects[h->object].material];
 	int i;
@@ -228,7 +229,7 @@ static vec3 shade_lights(tracer *t, const ray *r, departure *from, const materia
 			if (*cached >= 0 && *cached != from->skip &&
 			    object_intersect(s, *cached, &shadow, REAL_C(0.0), distance, NULL))
 				continue;
-			pass = scene_transmittance(s, &shadow, distance, from->skip, cached);
+			pass = scene_transmittance(t->accel, &shadow, distance, from->skip, cached);
 		}
 		if (pass <= REAL_C(0.0))
 			continue;
@@ -257,7 +258,7 @@ static vec3 trace_mirror(tracer *t, departure *from, dir3 dir, int level, real w
 static vec3 trace_refraction(tracer *t, const ray *r, departure *from, const material *mat,
 			     int level, real weight, const media *m)
 {
-	const scene *s = t->scene;
+	const scene *s = accel_scene(t->accel);
 	const hit *h = from->h;
 	int mat_index = s->objects[h->object].material;
 	media next_media;
@@ -283,7 +284,7 @@ static vec3 trace_refraction(tracer *t, const ray *r, departure *from, const mat
 static vec3 trace_ray(tracer *t, const ray *r, int skip, int level, real weight,
 		      const media *m, int *hit_object)
 {
-	const scene *s = t->scene;
+	const scene *s = accel_scene(t->accel);
 	const vec3 *absorb = m->count ? &s->materials[m->material[m->count - 1]].absorb : NULL;
 	int absorbing = absorb && (absorb->x > REAL_C(0.0) || absorb->y > REAL_C(0.0) ||
 				   absorb->z > REAL_C(0.0));
@@ -298,7 +299,7 @@ static vec3 trace_ray(tracer *t, const ray *r, int skip, int level, real weight,
 	 * point can be computed in every type. */
 	/* Eye rays (level 1) take the terms that depend on their origin from the table made
 	 * once for the frame, and the objects their image line can meet from it. */
-	if (!scene_intersect_from(s, r, level == 1 ? &t->eye : NULL, skip, REAL_FAR, &h)) {
+	if (!scene_intersect_from(t->accel, r, level == 1 ? &t->eye : NULL, skip, REAL_FAR, &h)) {
 		if (hit_object)
 			*hit_object = -1;
 		/* A ray that never leaves an absorbing medium is absorbed completely. */
@@ -348,7 +349,7 @@ static vec3 trace_ray(tracer *t, const ray *r, int skip, int level, real weight,
 
 void trace_eye_line(tracer *t, dir3 n)
 {
-	origin_terms_plane(t->scene, n, &t->eye);
+	origin_terms_plane(accel_scene(t->accel), n, &t->eye);
 }
 
 vec3 trace_eye(tracer *t, const ray *r, int *hit_object)

@@ -18,7 +18,7 @@ typedef struct {
 } media;
 
 typedef struct {
-	const scene *scene;
+	const accel *accel; /* the scene and its hierarchy (accel_scene gives the scene) */
 	int depth;   /* ray tree levels, eye ray = 1 */
 	real cutoff; /* smallest path weight still traced */
 	trace_stats stats;
@@ -30,7 +30,8 @@ typedef struct {
 	vec3 ambient[RT_MAX_MATERIALS]; /* each material's ambient light, made once */
 } tracer;
 
-void trace_init(tracer *t, const scene *s, int depth, real cutoff);
+/* Ready to trace the scene `a` searches (intersect.h). */
+void trace_init(tracer *t, const accel *a, int depth, real cutoff);
 
 /* The eye rays that follow lie in the plane through the eye with unit normal n (an
  * image line's, camera_line.normal): objects the plane misses are not looked for. */

@@ -77,3 +77,19 @@ double test_scale(int shift)
 {
 	return ldexp(1.0, shift);
 }
+
+const accel *test_accel(const scene *s, int bvh)
+{
+#if RT_USE_BVH
+	static accel plain; /* large: static */
+	if (bvh)
+		return accel_build(s);
+	plain.scene = s;
+	plain.tree.node_count = 0;
+	plain.tree.unbounded_count = 0;
+	return &plain;
+#else
+	(void)bvh;
+	return s;
+#endif
+}

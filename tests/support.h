@@ -4,7 +4,7 @@
 #define RT_TEST_SUPPORT_H
 
 #include "diag.h"
-#include "shape.h"
+#include "intersect.h"
 
 /* A ray from origin along dir, normalised in the tested precision. */
 ray test_ray(vec3 origin, vec3 dir);
@@ -16,6 +16,11 @@ int test_parse_text(scene *s, const char *name, const char *text, diag_sink_fn s
 
 /* Parses a scene held in a string as a scene file is loaded (load_scene_buffer: in fixed
  * point measured, scaled, and refused when out of range). */
+/* What the queries search for s (intersect.h): without a hierarchy (bvh = 0: every object
+ * tested) or with the one rt builds (bvh = 1). Each kind has its own storage, so a test
+ * can hold one of each. */
+const accel *test_accel(const scene *s, int bvh);
+
 int test_parse_buffer(scene *s, const char *name, const char *text, diag_sink_fn sink,
 		      void *ctx);
 

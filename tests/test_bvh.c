@@ -32,6 +32,7 @@ static void test_axis_rays(void)
 	enum { TINY = sizeof tiny / sizeof tiny[0] };
 	size_t at;
 	int i, j, x, z, misses = 0, mismatches = 0, rays = 0;
+	const accel *tree, *plain;
 
 	at = (size_t)snprintf(text, sizeof text,
 			      "v\nfrom 0 -50 0\nat 0 0 0\nup 0 0 1\nangle 30\nhither 1\n"
@@ -42,20 +43,19 @@ static void test_axis_rays(void)
 	if (!CHECK(test_parse_buffer(&s, "axis.nff", text, NULL, NULL)))
 		return;
 	CHECK_INT(s.object_count, 16);
-	bvh_build(&s);
-	if (!CHECK(s.bvh_node_count > 0))
+	tree = test_accel(&s, 1);
+	plain = test_accel(&s, 0);
+	if (!CHECK(tree->tree.node_count > 0))
 		return;
 	for (i = 0; i < TINY; i++)
 		for (j = 0; j < TINY; j++) {
 			ray r;
 			hit through_tree, one_by_one;
-			int found_tree, found_each, nodes = s.bvh_node_count;
+			int found_tree, found_each;
 			r.origin = s.camera.from;
 			r.dir = dir_make(test_unit(tiny[i]), UNIT_C(1.0), test_unit(tiny[j]));
-			found_tree = scene_intersect(&s, &r, REAL_MAX, &through_tree);
-			s.bvh_node_count = 0;
-			found_each = scene_intersect(&s, &r, REAL_MAX, &one_by_one);
-			s.bvh_node_count = nodes;
+			found_tree = scene_intersect(tree, &r, REAL_MAX, &through_tree);
+			found_each = scene_intersect(plain, &r, REAL_MAX, &one_by_one);
 			rays++;
 			misses += !found_each;
 			mismatches += found_tree != found_each ||

@@ -14,6 +14,7 @@
 
 /* Several megabytes: static, never on the stack. */
 static scene s;
+static const accel *searched; /* what scene_intersect searches: s, with or without a BVH */
 
 /* ---- random vectors and small double-precision helpers ------------------------------ */
 
@@ -124,9 +125,7 @@ static void one_object_scene(void)
 	s.materials[0].kd = 1;
 	s.materials[0].ior = 1;
 	s.object_count = 1;
-#if RT_USE_BVH
-	s.bvh_node_count = 0;
-#endif
+	searched = test_accel(&s, 0);
 }
 
 /* ---- (1) no self re-hit: spheres ---------------------------------------------------- */
@@ -224,7 +223,7 @@ static void self_hit_sphere(const sphere_setup *setup)
 		for (k = 0; k < 3; k++)
 			d[k] = target[k] - o[k];
 		r = test_ray(to_point(o), to_vec(d));
-		if (!scene_intersect(&s, &r, REAL_MAX, &h)) {
+		if (!scene_intersect(searched, &r, REAL_MAX, &h)) {
 			no_primary++;
 			continue;
 		}
@@ -249,12 +248,12 @@ static void self_hit_sphere(const sphere_setup *setup)
 			}
 			if (!expect_inside) {
 				/* From outside and moving away: nothing ahead. */
-				rehits += scene_intersect(&s, &next, REAL_MAX, &h2);
+				rehits += scene_intersect(searched, &next, REAL_MAX, &h2);
 				continue;
 			}
 			/* From inside there is exactly one root ahead. */
 			if (sphere_roots(next.origin, next.dir, c, radius, &t_exact) != 1 ||
-			    !scene_intersect(&s, &next, REAL_MAX, &h2)) {
+			    !scene_intersect(searched, &next, REAL_MAX, &h2)) {
 				far_missed++;
 				continue;
 			}
@@ -376,7 +375,7 @@ static void self_hit_hedron(const char *name, const frame *f)
 			o[i] = p[i] + back * w[i];
 		r = test_ray(to_point(o),
 			     vec_make(test_real(-w[0]), test_real(-w[1]), test_real(-w[2])));
-		if (!scene_intersect(&s, &r, REAL_MAX, &h) || !h.front) {
+		if (!scene_intersect(searched, &r, REAL_MAX, &h) || !h.front) {
 			no_primary++;
 			continue;
 		}
@@ -401,10 +400,10 @@ static void self_hit_hedron(const char *name, const frame *f)
 				continue;
 			}
 			if (outward) {
-				rehits += scene_intersect(&s, &next, REAL_MAX, &h2);
+				rehits += scene_intersect(searched, &next, REAL_MAX, &h2);
 				continue;
 			}
-			if (!scene_intersect(&s, &next, REAL_MAX, &h2) || h2.front) {
+			if (!scene_intersect(searched, &next, REAL_MAX, &h2) || h2.front) {
 				far_missed++;
 				continue;
 			}
@@ -498,7 +497,7 @@ static void self_hit_polygon(const char *name, const double origin[3], unsigned 
 		}
 		r = test_ray(to_point(o),
 			     vec_make(test_real(-w[0]), test_real(-w[1]), test_real(-w[2])));
-		if (!scene_intersect(&s, &r, REAL_MAX, &h)) {
+		if (!scene_intersect(searched, &r, REAL_MAX, &h)) {
 			no_primary++;
 			continue;
 		}
@@ -522,7 +521,7 @@ static void self_hit_polygon(const char *name, const double origin[3], unsigned 
 				wrong_side++;
 				continue;
 			}
-			rehits += scene_intersect(&s, &next, REAL_MAX, &h2);
+			rehits += scene_intersect(searched, &next, REAL_MAX, &h2);
 		}
 	}
 	snprintf(what, sizeof what, "%s: primary rays that missed", name);
@@ -670,7 +669,7 @@ static void fall_through(const char *name, fixture *fx)
 			o[k] = p[k] + back * w[k];
 		r = test_ray(to_point(o),
 			     vec_make(test_real(-w[0]), test_real(-w[1]), test_real(-w[2])));
-		if (!scene_intersect(&s, &r, REAL_MAX, &h))
+		if (!scene_intersect(searched, &r, REAL_MAX, &h))
 			grid_leaks++;
 		else if (!(h.object < fx->polygons &&
 			   fabs(test_double(h.t) - back * scale) < T_TOL(1e-4, 1e-10, back)))
@@ -696,7 +695,7 @@ static void fall_through(const char *name, fixture *fx)
 		for (k = 0; k < 3; k++)
 			o[k] = p[k] - back * dir[k];
 		r = test_ray(to_point(o), to_vec(dir));
-		if (!scene_intersect(&s, &r, REAL_MAX, &h))
+		if (!scene_intersect(searched, &r, REAL_MAX, &h))
 			cube_leaks++;
 		else if (!(h.object == fx->cube &&
 			   fabs(test_double(h.t) - back * scale) < T_TOL(1e-3, 1e-9, back)))
@@ -818,10 +817,10 @@ void suite_properties(void)
 	build_fixture(&fx);
 	fall_through("object by object", &fx);
 #if RT_USE_BVH
-	bvh_build(&s);
-	CHECK(s.bvh_node_count > 0);
+	searched = test_accel(&s, 1);
+	CHECK(searched->tree.node_count > 0);
 	fall_through("through the BVH", &fx);
-	s.bvh_node_count = 0;
+	searched = test_accel(&s, 0);
 #endif
 
 	energy();

@@ -148,7 +148,7 @@ int main(int argc, char **argv)
 		diag_error(opt.scene_path, 0, "%s", why);
 		return 1;
 	}
-	trace_init(&the_tracer, &the_scene, opt.depth ? opt.depth : the_scene.depth,
+	trace_init(&the_tracer, accel_build(&the_scene), opt.depth ? opt.depth : the_scene.depth,
 		    the_scene.cutoff);
 	if (opt.format == FORMAT_ASCII) {
 		preview_sink_init(&sinks.preview, PREVIEW_ASCII, mcu_stdout_write, NULL);

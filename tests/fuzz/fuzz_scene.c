@@ -41,15 +41,13 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	camera cam;
 	diag_set_sink(quiet, NULL);
 	if (load_scene_buffer(&fuzz_scene, "fuzz.nff", data, size)) {
-#if RT_USE_BVH
-		bvh_build(&fuzz_scene);
-#endif
 		/* A tiny image: every code path of the tracer, a few dozen eye rays; then the
 		 * same through the ANSI preview. */
 		if (!camera_init(&cam, &fuzz_scene.camera, 6, 4)) {
 			ppm_sink ppm;
 			preview_sink ansi;
-			trace_init(&fuzz_tracer, &fuzz_scene, fuzz_scene.depth, fuzz_scene.cutoff);
+			trace_init(&fuzz_tracer, accel_build(&fuzz_scene), fuzz_scene.depth,
+				   fuzz_scene.cutoff);
 			ppm_sink_init(&ppm, discard, NULL);
 			render_image(&fuzz_tracer, &cam, SAMPLE_CORNERS, 0, cam.height, &ppm.base,
 				     NULL, NULL);
