@@ -8,7 +8,6 @@
 #include "clearance.h"
 #include "quadratic.h"
 
-#if RT_SHAPE_CONE
 
 void cone_init(cone_shape *c, vec3 base, vec3 axis, real length, real base_radius,
 	       real apex_radius)
@@ -126,7 +125,3 @@ int cone_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h)
 	}
 	return 0;
 }
-#else
-/* ISO C wants something in every file. */
-typedef int rt_cones_left_out;
-#endif

@@ -66,6 +66,7 @@
 #ifndef RT_SHAPE_PATCH
 #define RT_SHAPE_PATCH 1
 #endif
+#define RT_PATCH_VERTICES (RT_SHAPE_PATCH ? RT_MAX_VERTICES : 1) /* the patch pools' size */
 
 /* The ANSI colour previews; 0 leaves them out (ASCII only) where flash is short. */
 #ifndef RT_PREVIEW_COLOR

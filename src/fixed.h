@@ -66,11 +66,6 @@ static inline int32_t fixed_abs(int32_t a)
 	return a < 0 ? (a == INT32_MIN ? INT32_MAX : -a) : a;
 }
 
-/* The narrow forms: 64-bit products and quotients from 32-bit steps (the M0's kernels
- * are made of them; every build has them, and the unit tests check them against the
- * wide forms). */
-#include "fixed_narrow.h"
-
 /* The kernels. On the M0 each is one out-of-line function, defined once in fixed.c
  * (which sets FIXED_KERNEL_BODIES): inlined copies in every file overflow its flash.
  * Elsewhere they are inline (RT_SHARED), and the 64-bit ones are the compiler's own
@@ -134,39 +129,71 @@ static inline fixed_reciprocal fixed_unit_reciprocal(fixed_reciprocal r)
 	return r;
 }
 
+/* The narrow forms: 64-bit products and quotients from 32-bit steps (the M0's kernels,
+ * defined there, are made of them; every build has them, and the unit tests check them against the
+ * wide forms). */
+#include "fixed_narrow.h"
 
-#if !FIXED_NARROW || defined(FIXED_KERNEL_BODIES)
+#if !FIXED_NARROW
+/* Hosts and wide cores: the compiler's own 64-bit arithmetic, inline (RT_SHARED). The M0's
+ * forms of these are in fixed_narrow.h. */
 RT_SHARED int64_t fixed_wide_mul(int32_t a, int32_t b)
 {
-#if FIXED_NARROW
-	uint32_t low;
-	int32_t high;
-	fixed_wide_mul_parts(a, b, &low, &high);
-	return fixed_join_parts(low, high);
-#else
 	return (int64_t)a * b;
-#endif
 }
 
 RT_SHARED uint32_t fixed_udiv(uint64_t n, uint32_t d)
 {
-#if FIXED_NARROW
-	return fixed_udiv_narrow(n, d);
-#else
 	uint64_t q = n / d;
 	return q > UINT32_MAX ? UINT32_MAX : (uint32_t)q;
-#endif
 }
 
 RT_SHARED uint64_t fixed_udiv64(uint64_t n, uint64_t d)
 {
-#if FIXED_NARROW
-	return fixed_udiv64_narrow(n, d);
-#else
 	return d ? n / d : UINT64_MAX;
-#endif
 }
 
+RT_SHARED int32_t fixed_mul(int32_t a, int32_t b)
+{
+	return fixed_saturate(((int64_t)a * b + 0x8000) >> 16);
+}
+
+/* A dot product summed in 64 bits and rounded once. */
+RT_SHARED int32_t fixed_dot3(int32_t ax, int32_t ay, int32_t az, int32_t bx, int32_t by,
+				 int32_t bz)
+{
+	return fixed_saturate(((int64_t)ax * bx + (int64_t)ay * by + (int64_t)az * bz + 0x8000) >>
+			      16);
+}
+
+RT_SHARED int64_t fixed_dot3_wide(int32_t ax, int32_t ay, int32_t az, int32_t bx,
+				     int32_t by, int32_t bz)
+{
+	/* Summed modulo 2^64, as the M0's parts are: each product is below 2^62, and only a
+	 * vector of three near-saturated components (far beyond any scene: a ray's sum that
+	 * saturated) takes the sum past 2^63. That wraps, a defined conversion on every
+	 * compiler rt builds with, where signed overflow would be undefined. */
+	return (int64_t)((uint64_t)((int64_t)ax * bx) + (uint64_t)((int64_t)ay * by) +
+			 (uint64_t)((int64_t)az * bz));
+}
+
+/* Rounded at bit 29 and saturated (as fixed_mul, at bit 30). */
+RT_SHARED int32_t fixed_mul30(int32_t a, int32_t b)
+{
+	return fixed_saturate(((int64_t)a * b + ((int64_t)1 << 29)) >> 30);
+}
+
+RT_SHARED int32_t fixed_dot3_30(int32_t ax, int32_t ay, int32_t az, int32_t bx, int32_t by,
+				   int32_t bz)
+{
+	return fixed_saturate(((int64_t)ax * bx + (int64_t)ay * by + (int64_t)az * bz +
+			       ((int64_t)1 << 29)) >>
+			      30);
+}
+#endif
+
+#if !FIXED_NARROW || defined(FIXED_KERNEL_BODIES)
+/* The same on every core, from the kernels above. */
 
 /* n / d truncated towards zero, as C's `/` (d != 0), through the kernels above. */
 RT_SHARED int64_t fixed_div64(int64_t n, int64_t d)
@@ -199,49 +226,12 @@ RT_SHARED int32_t fixed_round_div_sat(int64_t n, int32_t d)
 	return (n < 0) != (d < 0) ? -(int32_t)q : (int32_t)q;
 }
 
-RT_SHARED int32_t fixed_mul(int32_t a, int32_t b)
-{
-#if FIXED_NARROW
-	return fixed_mul_narrow(a, b);
-#else
-	return fixed_saturate(((int64_t)a * b + 0x8000) >> 16);
-#endif
-}
-
-/* A dot product summed in 64 bits and rounded once. */
-RT_SHARED int32_t fixed_dot3(int32_t ax, int32_t ay, int32_t az, int32_t bx, int32_t by,
-				 int32_t bz)
-{
-#if FIXED_NARROW
-	return fixed_dot3_narrow(ax, ay, az, bx, by, bz);
-#else
-	return fixed_saturate(((int64_t)ax * bx + (int64_t)ay * by + (int64_t)az * bz + 0x8000) >>
-			      16);
-#endif
-}
-
-RT_SHARED int64_t fixed_dot3_wide(int32_t ax, int32_t ay, int32_t az, int32_t bx,
-				     int32_t by, int32_t bz)
-{
-#if FIXED_NARROW
-	return fixed_dot3_wide_narrow(ax, ay, az, bx, by, bz);
-#else
-	/* Summed modulo 2^64, as the M0's parts are: each product is below 2^62, and only a
-	 * vector of three near-saturated components (far beyond any scene: a ray's sum that
-	 * saturated) takes the sum past 2^63. That wraps, a defined conversion on every
-	 * compiler rt builds with, where signed overflow would be undefined. */
-	return (int64_t)((uint64_t)((int64_t)ax * bx) + (uint64_t)((int64_t)ay * by) +
-			 (uint64_t)((int64_t)az * bz));
-#endif
-}
-
 RT_SHARED int32_t fixed_div(int32_t a, int32_t b)
 {
 	if (b == 0)
 		return a >= 0 ? FIXED_MAX : -FIXED_MAX;
 	return fixed_round_div_sat((int64_t)a * 65536, b);
 }
-
 
 RT_SHARED int32_t fixed_from_int(long i)
 {
@@ -312,35 +302,12 @@ RT_SHARED int32_t fixed_times_scale(int32_t x, uint32_t scale, int shift, int ne
 	return (x < 0) != negative ? -(int32_t)q : (int32_t)q;
 }
 
-/* Rounded at bit 29 and saturated: on the M0 in 32-bit halves, inlined (as fixed_mul). */
-RT_SHARED int32_t fixed_mul30(int32_t a, int32_t b)
-{
-#if FIXED_NARROW
-	return fixed_mul30_narrow(a, b);
-#else
-	return fixed_saturate(((int64_t)a * b + ((int64_t)1 << 29)) >> 30);
-#endif
-}
-
-RT_SHARED int32_t fixed_dot3_30(int32_t ax, int32_t ay, int32_t az, int32_t bx, int32_t by,
-				   int32_t bz)
-{
-#if FIXED_NARROW
-	return fixed_dot3_30_narrow(ax, ay, az, bx, by, bz);
-#else
-	return fixed_saturate(((int64_t)ax * bx + (int64_t)ay * by + (int64_t)az * bz +
-			       ((int64_t)1 << 29)) >>
-			      30);
-#endif
-}
-
 RT_SHARED int32_t fixed_div30(int32_t a, int32_t b)
 {
 	if (b == 0)
 		return a >= 0 ? FIXED_MAX : -FIXED_MAX;
 	return fixed_round_div_sat((int64_t)a * ((int64_t)1 << 30), b);
 }
-
 #endif
 
 /* Rounded integer square root of a 64-bit number. */

@@ -61,6 +61,9 @@ RT_INLINE void fixed_umul64_parts_m0(uint32_t a, uint32_t b, uint32_t *low, uint
 	*high = b;
 }
 
+/* The signed form of fixed_umul64_parts_m0: the same steps, with arithmetic shifts where
+ * that one shifts logically (three instructions differ; one routine for both would cost
+ * the M0 a sign fix-up per product). */
 RT_INLINE void fixed_wide_mul_parts_m0(int32_t a, int32_t b, uint32_t *low, int32_t *high)
 {
 	uint32_t al, bl, product;

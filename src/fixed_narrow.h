@@ -258,4 +258,56 @@ static inline uint64_t fixed_udiv64_narrow(uint64_t n, uint64_t d)
 	return q;
 }
 
+
+#if FIXED_NARROW && defined(FIXED_KERNEL_BODIES)
+/* The M0's kernels (declared in fixed.h), each defined once, out of line, in fixed.c:
+ * made of the narrow forms above. */
+RT_SHARED int64_t fixed_wide_mul(int32_t a, int32_t b)
+{
+	uint32_t low;
+	int32_t high;
+	fixed_wide_mul_parts(a, b, &low, &high);
+	return fixed_join_parts(low, high);
+}
+
+RT_SHARED uint32_t fixed_udiv(uint64_t n, uint32_t d)
+{
+	return fixed_udiv_narrow(n, d);
+}
+
+RT_SHARED uint64_t fixed_udiv64(uint64_t n, uint64_t d)
+{
+	return fixed_udiv64_narrow(n, d);
+}
+
+RT_SHARED int32_t fixed_mul(int32_t a, int32_t b)
+{
+	return fixed_mul_narrow(a, b);
+}
+
+RT_SHARED int32_t fixed_dot3(int32_t ax, int32_t ay, int32_t az, int32_t bx, int32_t by,
+				 int32_t bz)
+{
+	return fixed_dot3_narrow(ax, ay, az, bx, by, bz);
+}
+
+RT_SHARED int64_t fixed_dot3_wide(int32_t ax, int32_t ay, int32_t az, int32_t bx,
+				     int32_t by, int32_t bz)
+{
+	return fixed_dot3_wide_narrow(ax, ay, az, bx, by, bz);
+}
+
+/* Rounded at bit 29 and saturated: in 32-bit halves, inlined (as fixed_mul). */
+RT_SHARED int32_t fixed_mul30(int32_t a, int32_t b)
+{
+	return fixed_mul30_narrow(a, b);
+}
+
+RT_SHARED int32_t fixed_dot3_30(int32_t ax, int32_t ay, int32_t az, int32_t bx, int32_t by,
+				   int32_t bz)
+{
+	return fixed_dot3_30_narrow(ax, ay, az, bx, by, bz);
+}
+#endif
+
 #endif

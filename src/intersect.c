@@ -15,10 +15,8 @@ RT_INLINE int shape_intersect(const scene *s, const object *o, const ray *r,
 	case SHAPE_POLYGON:
 	case SHAPE_PATCH:
 		return polygon_intersect(s, o, r, tmin, tmax, h);
-#if RT_SHAPE_CONE
 	case SHAPE_CONE:
-		return cone_intersect(o, r, tmin, tmax, h);
-#endif
+		return RT_SHAPE_CONE && cone_intersect(o, r, tmin, tmax, h);
 	case SHAPE_HEDRON:
 		return hedron_intersect(s, o, r, tmin, tmax, h);
 	case SHAPE_PLANE:

@@ -321,18 +321,15 @@ static int parse_entity(parser *p)
 	case CMD_POLYGON:
 		return parse_polygon(p, 0);
 	case CMD_PATCH:
-#if RT_SHAPE_PATCH
+		if (!RT_SHAPE_PATCH)
+			return lexer_fail(&p->lx, p->lx.tok_line,
+					  "patches are left out of this build (RT_SHAPE_PATCH)");
 		return parse_polygon(p, 1);
-#else
-		return lexer_fail(&p->lx, p->lx.tok_line,
-			    "patches are left out of this build (RT_SHAPE_PATCH)");
-#endif
 	case CMD_CONE:
-#if RT_SHAPE_CONE
+		if (!RT_SHAPE_CONE)
+			return lexer_fail(&p->lx, p->lx.tok_line,
+					  "cones are left out of this build (RT_SHAPE_CONE)");
 		return parse_cone(p);
-#else
-		return lexer_fail(&p->lx, p->lx.tok_line, "cones are left out of this build (RT_SHAPE_CONE)");
-#endif
 	case CMD_HEDRON:
 		return parse_hedron(p);
 	case CMD_BOX:

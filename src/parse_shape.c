@@ -51,15 +51,13 @@ int parse_polygon(parser *p, int patch)
 		if (!lexer_read_triple(&p->lx, patch ? "patch vertex" : "polygon vertex", 1,
 			      &s->vertices[first + i]))
 			return 0;
-#if RT_SHAPE_PATCH
-		if (patch) {
+		if (RT_SHAPE_PATCH && patch) {
 			/* Normalised as read; a zero one stays zero until the face's is known. */
 			vec3 n;
 			if (!lexer_read_triple(&p->lx, "patch vertex normal", 0, &n))
 				return 0;
 			s->normals[first + i] = dir_normalize(n);
 		}
-#endif
 	}
 	normal = polygon_normal(s->vertices + first, (int)count);
 	if (!(dir_dot(normal, normal) > 0)) {
@@ -74,7 +72,6 @@ int parse_polygon(parser *p, int patch)
 	return 1;
 }
 
-#if RT_SHAPE_CONE
 int parse_cone(parser *p)
 {
 	int line = p->lx.tok_line;
@@ -117,7 +114,6 @@ int parse_cone(parser *p)
 	cone_init(&o->u.cone, base, axis, length, base_radius, apex_radius);
 	return 1;
 }
-#endif
 
 /* Adds the half-space n.x <= d to the plane pool, normalised; `line` is the entity's
  * (a capacity error names it; a zero normal is reported at its own row). */

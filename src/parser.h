@@ -50,9 +50,7 @@ int parse_sphere(parser *p);
 /* `p n` or `pp n` (patch = 1). Apart (RT_APART): inlined into the entity loop it cost 48
  * bytes more M0 flash. */
 RT_APART int parse_polygon(parser *p, int patch);
-#if RT_SHAPE_CONE
 int parse_cone(parser *p);
-#endif
 int parse_hedron(parser *p);
 int parse_box(parser *p);
 int parse_plane(parser *p);

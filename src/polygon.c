@@ -91,7 +91,6 @@ int polygon_contains_ray(const vec3 *vertices, int count, const ray *r)
 			  : crossings(vertices, count, &f, 2);
 }
 
-#if RT_SHAPE_PATCH
 vec2 polygon_project(vec3 p, int axis)
 {
 	vec2 q;
@@ -140,7 +139,6 @@ static dir3 patch_normal(const scene *s, const polygon_shape *poly, vec3 p)
 	}
 	return poly->normal;
 }
-#endif
 
 /* ---- set-up from the parsed vertices ----------------------------------------- */
 
@@ -205,18 +203,15 @@ static vec3 centroid_of(const vec3 *v, int count)
 void polygon_init(scene *s, polygon_shape *poly, dir3 normal, int first, int count, int patch)
 {
 	vec3 centroid;
-#if RT_SHAPE_PATCH
 	int i;
-#else
-	(void)patch;
-#endif
 	poly->normal = normal;
 	/* The plane passes through the centroid: the best fit for slightly non-planar input. */
 	centroid = centroid_of(s->vertices + first, count);
 	poly->offset = dir_dot_vec(poly->normal, centroid);
 	poly->first = first;
 	poly->count = count;
-#if RT_SHAPE_PATCH
+	if (!RT_SHAPE_PATCH)
+		return;
 	poly->axis = unit_fabs(poly->normal.x) > unit_fabs(poly->normal.y)
 			     ? (unit_fabs(poly->normal.x) > unit_fabs(poly->normal.z) ? 0 : 2)
 			     : (unit_fabs(poly->normal.y) > unit_fabs(poly->normal.z) ? 1 : 2);
@@ -229,7 +224,6 @@ void polygon_init(scene *s, polygon_shape *poly, dir3 normal, int first, int cou
 			*n = dir_dot(*n, *n) > 0 ? *n : poly->normal;
 		}
 	}
-#endif
 }
 
 /* ---- bounds and clearance --------------------------------------------------------- */
@@ -295,11 +289,8 @@ int polygon_intersect(const scene *s, const object *o, const ray *r, real tmin, 
 		h->t = t;
 		h->point = p;
 		h->normal = poly->normal;
-#if RT_SHAPE_PATCH
-		h->shading = o->kind == SHAPE_PATCH ? patch_normal(s, poly, p) : poly->normal;
-#else
-		h->shading = poly->normal;
-#endif
+		h->shading = RT_SHAPE_PATCH && o->kind == SHAPE_PATCH ? patch_normal(s, poly, p)
+								      : poly->normal;
 	}
 	return 1;
 }

@@ -120,12 +120,9 @@ typedef struct {
 	light lights[RT_MAX_LIGHTS];
 	object objects[RT_MAX_OBJECTS];
 	vec3 vertices[RT_MAX_VERTICES];
-#if RT_SHAPE_PATCH
-	dir3 normals[RT_MAX_VERTICES];
-#endif
-#if RT_SHAPE_PATCH
-	vec2 projected[RT_MAX_VERTICES]; /* vertices projected for the shading blend */
-#endif
+	/* Patches only (one unused slot each where RT_SHAPE_PATCH leaves them out): */
+	dir3 normals[RT_PATCH_VERTICES];   /* each vertex's shading normal */
+	vec2 projected[RT_PATCH_VERTICES]; /* vertices projected for the shading blend */
 	halfspace planes[RT_MAX_PLANES];
 } scene;
 

@@ -13,10 +13,8 @@ int shape_bounds(const scene *s, const object *o, vec3 *lo, vec3 *hi)
 	case SHAPE_POLYGON:
 	case SHAPE_PATCH:
 		return polygon_bounds(s, &o->u.polygon, lo, hi);
-#if RT_SHAPE_CONE
 	case SHAPE_CONE:
-		return cone_bounds(&o->u.cone, lo, hi);
-#endif
+		return RT_SHAPE_CONE && cone_bounds(&o->u.cone, lo, hi);
 	case SHAPE_HEDRON:
 		return hedron_bounds(s, &o->u.hedron, lo, hi);
 	default:
@@ -32,10 +30,8 @@ real shape_clearance(const scene *s, const object *o, const vec3 *p)
 	case SHAPE_POLYGON:
 	case SHAPE_PATCH:
 		return polygon_clearance(s, &o->u.polygon, p);
-#if RT_SHAPE_CONE
 	case SHAPE_CONE:
-		return cone_clearance(&o->u.cone, p);
-#endif
+		return RT_SHAPE_CONE ? cone_clearance(&o->u.cone, p) : REAL_MAX;
 	case SHAPE_HEDRON:
 		return hedron_clearance(s, &o->u.hedron, p);
 	case SHAPE_PLANE:
@@ -51,11 +47,10 @@ void shape_measure(const object *o, real *extent, real *feature)
 	case SHAPE_SPHERE:
 		sphere_measure(&o->u.sphere, extent, feature);
 		break;
-#if RT_SHAPE_CONE
 	case SHAPE_CONE:
-		cone_measure(&o->u.cone, extent, feature);
+		if (RT_SHAPE_CONE)
+			cone_measure(&o->u.cone, extent, feature);
 		break;
-#endif
 	case SHAPE_PLANE:
 		plane_measure(&o->u.plane, extent);
 		break;

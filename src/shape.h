@@ -149,11 +149,9 @@ RT_APART real plane_gap(dir3 normal, real offset, const vec3 *origin);
  * polygon that shares it, so exactly one of a tiling's polygons is met. */
 int polygon_contains_ray(const vec3 *vertices, int count, const ray *r);
 
-#if RT_SHAPE_PATCH
 /* The 2D coordinates of p in the projection that drops `axis` (u = axis+1, v = axis+2,
  * mod 3), where a patch's shading normal is blended. */
 vec2 polygon_project(vec3 p, int axis);
-#endif
 
 
 #endif
