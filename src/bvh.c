@@ -7,7 +7,6 @@
 #include "box.h"
 #include "intersect.h"
 
-#if RT_USE_BVH
 
 #define BINS 16           /* SAH candidate planes per axis, minus one */
 #define MAX_LEAF 4        /* a leaf holds at most this many objects when it can be split */
@@ -218,13 +217,10 @@ void bvh_build(bvh_tree *t, const scene *s)
 typedef struct {
 	vec3 origin, inv;
 	int near_x, near_y, near_z; /* 0: the lower bound is entered first, 1: the upper */
-#if REAL_FIXED
 	int divided; /* 1 when some axis's distances are divided out (slab_distance) */
 	dir3 dir;
-#endif
 } slab_ray;
 
-#if REAL_FIXED
 #define RECIPROCAL_LIMIT REAL_C(16384.0) /* 1/d for |d| >= 2^-14, well inside Q16.16 */
 
 /* Where the ray meets the plane `offset` past its origin along an axis of direction
@@ -255,7 +251,6 @@ static int box_hit_divided(const bvh_node *n, const slab_ray *r, real tmax, real
 	*tenter = tnear;
 	return tnear <= tfar;
 }
-#endif
 
 /* Does the ray enter node n's box before tmax? *tenter gets where. The comparisons are
  * written so that NaN from 0 * inf (a ray lying in a slab plane) leaves the interval as
@@ -264,10 +259,8 @@ static inline int box_hit(const bvh_node *n, const slab_ray *r, real tmax, real 
 {
 	real tnear = REAL_C(0.0), tfar = tmax;
 	real x0, x1, y0, y1, z0, z1;
-#if REAL_FIXED
-	if (r->divided)
+	if (REAL_SATURATES && r->divided)
 		return box_hit_divided(n, r, tmax, tenter);
-#endif
 	/* Saturating differences (real_add): a box of an object that reaches the edge of
 	 * fixed point's range, less a far origin, would overflow. */
 	x0 = real_mul(real_add(n->bounds[r->near_x].x, -r->origin.x), r->inv.x);
@@ -332,11 +325,10 @@ static inline real traverse(const scene *s, const bvh_tree *t, const ray *r, int
 	sr.near_x = sr.inv.x < REAL_C(0.0);
 	sr.near_y = sr.inv.y < REAL_C(0.0);
 	sr.near_z = sr.inv.z < REAL_C(0.0);
-#if REAL_FIXED
 	sr.dir = r->dir;
-	sr.divided = !(real_fabs(sr.inv.x) < RECIPROCAL_LIMIT && real_fabs(sr.inv.y) < RECIPROCAL_LIMIT &&
-		       real_fabs(sr.inv.z) < RECIPROCAL_LIMIT);
-#endif
+	sr.divided = REAL_SATURATES && !(real_fabs(sr.inv.x) < RECIPROCAL_LIMIT &&
+					 real_fabs(sr.inv.y) < RECIPROCAL_LIMIT &&
+					 real_fabs(sr.inv.z) < RECIPROCAL_LIMIT);
 	if (t->node_count && box_hit(&t->nodes[0], &sr, tmax, &enter)) {
 		stack[0].node = 0;
 		stack[0].enter = enter;
@@ -386,4 +378,3 @@ real bvh_transmittance(const scene *s, const bvh_tree *t, const ray *r, int skip
 	return traverse(s, t, r, skip, tmax, NULL, 1, blocker);
 }
 
-#endif

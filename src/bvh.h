@@ -1,14 +1,14 @@
 /* bvh.h - the bounding volume hierarchy that makes large scenes fast: built once from
  * the loaded scene, beside it (the scene itself stays as loaded), and searched by
  * intersect.c's queries through their accel.
- * Optional at compile time (RT_USE_BVH=0 leaves it out, as the MCU build does).
+ * Optional at compile time (RT_USE_BVH=0 leaves it out, as the MCU build does: accel is
+ * then the scene alone, and nothing calls this).
  * See LICENSE for copyright and licence. */
 #ifndef RT_BVH_H
 #define RT_BVH_H
 
 #include "shape.h"
 
-#if RT_USE_BVH
 /* A node of the bounding volume hierarchy (bvh.c). */
 typedef struct {
 	vec3 bounds[2]; /* lower and upper corner */
@@ -40,6 +40,4 @@ int bvh_nearest(const scene *s, const bvh_tree *t, const ray *r, int skip, real 
  * blocker, or -1. */
 real bvh_transmittance(const scene *s, const bvh_tree *t, const ray *r, int skip, real tmax,
 		       int *blocker);
-#endif
-
 #endif

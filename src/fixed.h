@@ -31,34 +31,16 @@ static inline int32_t fixed_saturate(int64_t v)
 #define FIXED_NARROW 0
 #endif
 
-/* The kernels below work on 64-bit values as two 32-bit halves (low, high): on the M0 a
- * 64-bit value in C costs register shuffles and carry tests the instruction set does in
- * one step. With GCC there the product and the sum are Thumb-1 assembly, the same steps
- * as fixed_wide_mul_narrow and a 64-bit add; elsewhere C with the same results, so the
- * unit tests check the forms built on them on every build. */
+/* Where GCC builds for the M0, the narrow forms' primitives are Thumb-1 assembly
+ * (fixed_m0.h, through fixed_narrow.h). */
 #if FIXED_NARROW && defined(__GNUC__)
 #define FIXED_ASM 1
 #else
 #define FIXED_ASM 0
 #endif
-#if FIXED_ASM
-#include "fixed_m0.h" /* the Cortex-M0's kernels in Thumb-1 assembly */
-#endif
 
-/* fixed_saturate((int64_t)a + b) in 32-bit arithmetic: the overflow test first. On the
- * M0 the add's own overflow flag tells it, and a sum of exactly -2^31 (no overflow, but
- * outside the range) is the one other case: two instructions more, where the C test is
- * six (vector sums are most of its uses). */
-RT_INLINE int32_t fixed_add(int32_t a, int32_t b)
-{
-#if FIXED_ASM
-	return fixed_add_m0(a, b);
-#else
-	if (b > 0 ? a > INT32_MAX - b : a < -INT32_MAX - b)
-		return b > 0 ? INT32_MAX : -INT32_MAX;
-	return a + b;
-#endif
-}
+/* a + b, saturating (fixed_narrow.h defines it, in Thumb-1 assembly on the M0). */
+RT_INLINE int32_t fixed_add(int32_t a, int32_t b);
 
 /* |a|, saturating (a few instructions: inline everywhere). */
 static inline int32_t fixed_abs(int32_t a)

@@ -1,15 +1,15 @@
 /* fixed_m0.h - the Cortex-M0's arithmetic kernels in Thumb-1 assembly: a saturating add,
  * 32 x 32 -> 64-bit products from four 16 x 16 ones, a 64-bit add, and the steps of a
- * 64 / 32 division. fixed.h includes it only where GCC builds for an ARMv6-M core
- * (FIXED_ASM); every other build has the C forms beside each call, with the same
- * results (tests/test_fixed.c checks them on the host and under qemu).
+ * 64 / 32 division. fixed_narrow.h includes it only where GCC builds for an ARMv6-M
+ * core (FIXED_ASM); every other build has the C forms there, with the same results
+ * (tests/test_fixed.c checks them on the host and under qemu).
  * GCC hands Thumb-1 inline assembly to the assembler in the old divided syntax: these
  * lines are in unified syntax.
  * See LICENSE for copyright and licence. */
 #ifndef RT_FIXED_M0_H
 #define RT_FIXED_M0_H
 
-RT_INLINE int32_t fixed_add_m0(int32_t a, int32_t b)
+RT_INLINE int32_t fixed_add(int32_t a, int32_t b)
 {
 	int32_t sum, sign;
 	__asm__(".syntax unified\n\t"
@@ -33,7 +33,7 @@ RT_INLINE int32_t fixed_add_m0(int32_t a, int32_t b)
 	return sum;
 }
 
-RT_INLINE void fixed_umul64_parts_m0(uint32_t a, uint32_t b, uint32_t *low, uint32_t *high)
+RT_INLINE void fixed_umul64_parts(uint32_t a, uint32_t b, uint32_t *low, uint32_t *high)
 {
 	uint32_t al, bl, product;
 	__asm__(".syntax unified\n\t"
@@ -61,10 +61,10 @@ RT_INLINE void fixed_umul64_parts_m0(uint32_t a, uint32_t b, uint32_t *low, uint
 	*high = b;
 }
 
-/* The signed form of fixed_umul64_parts_m0: the same steps, with arithmetic shifts where
+/* The signed form of fixed_umul64_parts: the same steps, with arithmetic shifts where
  * that one shifts logically (three instructions differ; one routine for both would cost
  * the M0 a sign fix-up per product). */
-RT_INLINE void fixed_wide_mul_parts_m0(int32_t a, int32_t b, uint32_t *low, int32_t *high)
+RT_INLINE void fixed_wide_mul_parts(int32_t a, int32_t b, uint32_t *low, int32_t *high)
 {
 	uint32_t al, bl, product;
 	/* a and b become their high halves; the four products, then each cross product
@@ -94,7 +94,7 @@ RT_INLINE void fixed_wide_mul_parts_m0(int32_t a, int32_t b, uint32_t *low, int3
 	*high = b;
 }
 
-RT_INLINE void fixed_add_parts_m0(uint32_t *low, int32_t *high, uint32_t add_low,
+RT_INLINE void fixed_add_parts(uint32_t *low, int32_t *high, uint32_t add_low,
 				   int32_t add_high)
 {
 	uint32_t l = *low;
@@ -109,9 +109,8 @@ RT_INLINE void fixed_add_parts_m0(uint32_t *low, int32_t *high, uint32_t add_low
 	*high = h;
 }
 
-/* The quotient steps of fixed_udiv_narrow: `steps` (16 or 32) bits of the quotient
- * shifted into *low as the remainder *rem (below d) takes the bits shifted out of it. */
-RT_INLINE void fixed_udiv_steps_m0(uint32_t *low_bits, uint32_t *remainder, uint32_t d,
+/* The quotient steps of fixed_udiv_narrow (16 or 32 of them), four to a pass. */
+RT_INLINE void fixed_udiv_steps(uint32_t *low_bits, uint32_t *remainder, uint32_t d,
 				     int steps)
 {
 	uint32_t low = *low_bits, rem = *remainder;

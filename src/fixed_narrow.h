@@ -43,19 +43,73 @@ static inline uint64_t fixed_umul64_narrow(uint32_t a, uint32_t b)
 	return ((uint64_t)high << 32) | low;
 }
 
+/* The primitives the narrow forms are made of: a saturating add, the two 32 x 32 -> 64
+ * products, a 64-bit add and the quotient steps of a division, each on 64-bit values as
+ * two 32-bit halves (on the M0 a 64-bit value in C costs register shuffles and carry
+ * tests the instruction set does in one step). Where GCC builds for the M0 they are
+ * Thumb-1 assembly (fixed_m0.h); everywhere else C with the same results, which the unit
+ * tests check on every build. */
+#if FIXED_ASM
+#include "fixed_m0.h"
+#else
+/* fixed_saturate((int64_t)a + b) in 32-bit arithmetic: the overflow test first. On the
+ * M0 the add's own overflow flag tells it, and a sum of exactly -2^31 (no overflow, but
+ * outside the range) is the one other case: two instructions more, where the C test is
+ * six (vector sums are most of its uses). */
+RT_INLINE int32_t fixed_add(int32_t a, int32_t b)
+{
+	if (b > 0 ? a > INT32_MAX - b : a < -INT32_MAX - b)
+		return b > 0 ? INT32_MAX : -INT32_MAX;
+	return a + b;
+}
+
 /* a b as (*high << 32) + *low for unsigned a and b, as fixed_umul64_narrow. */
 RT_INLINE void fixed_umul64_parts(uint32_t a, uint32_t b, uint32_t *low, uint32_t *high)
 {
-#if FIXED_ASM
-	fixed_umul64_parts_m0(a, b, low, high);
-#else
 	/* Elsewhere the compiler's own product where it is cheap (a Cortex-M3 has one
 	 * instruction for it), the 16 x 16 form on a narrow core without GCC. */
 	uint64_t product = FIXED_NARROW ? fixed_umul64_narrow(a, b) : (uint64_t)a * b;
 	*low = (uint32_t)product;
 	*high = (uint32_t)(product >> 32);
-#endif
 }
+
+/* a b as (*high << 32) + *low, exactly. */
+RT_INLINE void fixed_wide_mul_parts(int32_t a, int32_t b, uint32_t *low, int32_t *high)
+{
+	int64_t product = FIXED_NARROW ? fixed_wide_mul_narrow(a, b) : (int64_t)a * b;
+	*low = (uint32_t)product;
+	*high = (int32_t)(product >> 32);
+}
+
+/* (*high, *low) += (high, low), wrapping as 64-bit two's complement. */
+RT_INLINE void fixed_add_parts(uint32_t *low, int32_t *high, uint32_t add_low,
+				   int32_t add_high)
+{
+	uint32_t sum = *low + add_low;
+	*high = (int32_t)((uint32_t)*high + (uint32_t)add_high + (sum < add_low));
+	*low = sum;
+}
+
+/* The quotient steps of fixed_udiv_narrow: `steps` bits of the quotient shifted into *low
+ * as the remainder *rem (below d) takes the bits shifted out of it. */
+RT_INLINE void fixed_udiv_steps(uint32_t *low_bits, uint32_t *remainder, uint32_t d, int steps)
+{
+	uint32_t low = *low_bits, rem = *remainder;
+	for (; steps > 0; steps--) {
+		/* rem < d, so 2 rem + 1 < 2^33: the bit shifted out is the 33rd. */
+		uint32_t carry = rem >> 31;
+		rem = (rem << 1) | (low >> 31);
+		low <<= 1;
+		if (carry || rem >= d) {
+			rem -= d;
+			low |= 1;
+		}
+	}
+	*low_bits = low;
+	*remainder = rem;
+}
+#endif
+
 
 RT_INLINE uint64_t fixed_umul64(uint32_t a, uint32_t b)
 {
@@ -68,30 +122,7 @@ RT_INLINE uint64_t fixed_umul64(uint32_t a, uint32_t b)
 #endif
 }
 
-/* a b as (*high << 32) + *low, exactly. */
-RT_INLINE void fixed_wide_mul_parts(int32_t a, int32_t b, uint32_t *low, int32_t *high)
-{
-#if FIXED_ASM
-	fixed_wide_mul_parts_m0(a, b, low, high);
-#else
-	int64_t product = FIXED_NARROW ? fixed_wide_mul_narrow(a, b) : (int64_t)a * b;
-	*low = (uint32_t)product;
-	*high = (int32_t)(product >> 32);
-#endif
-}
 
-/* (*high, *low) += (high, low), wrapping as 64-bit two's complement. */
-RT_INLINE void fixed_add_parts(uint32_t *low, int32_t *high, uint32_t add_low,
-				   int32_t add_high)
-{
-#if FIXED_ASM
-	fixed_add_parts_m0(low, high, add_low, add_high);
-#else
-	uint32_t sum = *low + add_low;
-	*high = (int32_t)((uint32_t)*high + (uint32_t)add_high + (sum < add_low));
-	*low = sum;
-#endif
-}
 
 RT_INLINE int64_t fixed_join_parts(uint32_t low, int32_t high)
 {
@@ -219,20 +250,7 @@ static inline uint32_t fixed_udiv_narrow(uint64_t n, uint32_t d)
 		low <<= 16;
 		steps = 16;
 	}
-#if FIXED_ASM
-	fixed_udiv_steps_m0(&low, &rem, d, steps);
-#else
-	for (; steps > 0; steps--) {
-		/* rem < d, so 2 rem + 1 < 2^33: the bit shifted out is the 33rd. */
-		uint32_t carry = rem >> 31;
-		rem = (rem << 1) | (low >> 31);
-		low <<= 1;
-		if (carry || rem >= d) {
-			rem -= d;
-			low |= 1;
-		}
-	}
-#endif
+	fixed_udiv_steps(&low, &rem, d, steps);
 	return low;
 }
 

@@ -124,13 +124,11 @@ int scene_intersect_from(const accel *a, const ray *r, const origin_terms *k, in
 			 real tmax, hit *h)
 {
 	const scene *s = accel_scene(a);
+	const bvh_tree *tree = accel_tree(a);
 	int i, found = 0;
-#if RT_USE_BVH
-	if (a->tree.node_count) {
-		found = bvh_nearest(s, &a->tree, r, skip, tmax, h);
-	} else
-#endif
-	{
+	if (tree) {
+		found = bvh_nearest(s, tree, r, skip, tmax, h);
+	} else {
 		uint32_t candidates = k ? k->candidates : ~(uint32_t)0;
 		for (i = 0; i < s->object_count; i++) {
 			/* Each hit shrinks tmax, so later objects only report nearer hits. */
@@ -153,15 +151,14 @@ int scene_intersect_from(const accel *a, const ray *r, const origin_terms *k, in
 real scene_transmittance(const accel *a, const ray *r, real tmax, int skip, int *blocker)
 {
 	const scene *s = accel_scene(a);
+	const bvh_tree *tree = accel_tree(a);
 	real pass = REAL_C(1.0);
 	int i, unused;
 	if (!blocker)
 		blocker = &unused;
 	*blocker = -1;
-#if RT_USE_BVH
-	if (a->tree.node_count)
-		return bvh_transmittance(s, &a->tree, r, skip, tmax, blocker);
-#endif
+	if (tree)
+		return bvh_transmittance(s, tree, r, skip, tmax, blocker);
 	for (i = 0; i < s->object_count; i++) {
 		if (i != skip && shape_intersect(s, &s->objects[i], r, NULL, REAL_C(0.0), tmax, NULL)) {
 			real kt = s->materials[s->objects[i].material].kt;

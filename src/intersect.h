@@ -3,6 +3,7 @@
 #ifndef RT_INTERSECT_H
 #define RT_INTERSECT_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include "bvh.h"
@@ -17,6 +18,7 @@ typedef struct {
 	bvh_tree tree;
 } accel;
 #define accel_scene(a) ((a)->scene)
+#define accel_tree(a) ((a)->tree.node_count ? &(a)->tree : NULL) /* NULL: search each object */
 
 /* The accel the queries search for s, built once into the intersection layer's own
  * storage (its hierarchy, for a scene large enough to need one): one scene at a time. */
@@ -24,6 +26,7 @@ const accel *accel_build(const scene *s);
 #else
 typedef scene accel;
 #define accel_scene(a) (a)
+#define accel_tree(a) ((void)(a), (const bvh_tree *)NULL)
 #define accel_build(s) ((const accel *)(s)) /* a macro: on the M0 an inline function cost flash */
 #endif
 

@@ -18,22 +18,23 @@ dir3 optics_reflect_at(dir3 d, dir3 n, unit c)
 int optics_refract(dir3 d, dir3 n, real eta, dir3 *t)
 {
 	unit cos_i = -dir_dot(d, n);
-#if REAL_FIXED
-	/* Q2.30 stops short of 2, and eta d reaches eta: past 2 on leaving a dense medium.
-	 * The same t in tangential form keeps every term within unit length: the tangent
-	 * d + cos_i n (length sin_i) times eta is the refracted tangent (length sin_t), and
-	 * t = eta (d + cos_i n) - cos_t n with cos_t^2 = k = 1 - eta^2 sin_i^2. The refracted
-	 * tangent is made only without total internal reflection: then it is within unit
-	 * length, and its components cannot saturate. */
-	dir3 tangent = dir_madd_unit(d, cos_i, n), across;
-	unit k = UNIT_C(1.0) - unit_scale(unit_scale(dir_dot(tangent, tangent), eta), eta);
-	if (!(k > UNIT_C(0.0)))
-		return 0;
-	across = dir_make(unit_scale(tangent.x, eta), unit_scale(tangent.y, eta),
-			  unit_scale(tangent.z, eta));
-	*t = dir_madd_unit(across, -unit_sqrt(k), n);
-	return 1;
-#else
+	if (REAL_SATURATES) {
+		/* Q2.30 stops short of 2, and eta d reaches eta: past 2 on leaving a dense
+		 * medium. The same t in tangential form keeps every term within unit length:
+		 * the tangent d + cos_i n (length sin_i) times eta is the refracted tangent
+		 * (length sin_t), and t = eta (d + cos_i n) - cos_t n with cos_t^2 = k =
+		 * 1 - eta^2 sin_i^2. The refracted tangent is made only without total internal
+		 * reflection: then it is within unit length, and its components cannot
+		 * saturate. */
+		dir3 tangent = dir_madd_unit(d, cos_i, n), across;
+		unit k = UNIT_C(1.0) - unit_scale(unit_scale(dir_dot(tangent, tangent), eta), eta);
+		if (!(k > UNIT_C(0.0)))
+			return 0;
+		across = dir_make(unit_scale(tangent.x, eta), unit_scale(tangent.y, eta),
+				  unit_scale(tangent.z, eta));
+		*t = dir_madd_unit(across, -unit_sqrt(k), n);
+		return 1;
+	}
 	real k = REAL_C(1.0) - real_mul(real_mul(eta, eta), REAL_C(1.0) - real_mul(cos_i, cos_i));
 	if (!(k > REAL_C(0.0)))
 		return 0;
@@ -41,7 +42,6 @@ int optics_refract(dir3 d, dir3 n, real eta, dir3 *t)
 	*t = dir_make(real_mul(d.x, eta), real_mul(d.y, eta), real_mul(d.z, eta));
 	*t = dir_madd_unit(*t, real_mul(eta, cos_i) - real_sqrt(k), n);
 	return 1;
-#endif
 }
 
 real optics_fresnel(unit cosine, real eta)
