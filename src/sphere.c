@@ -12,12 +12,9 @@ void sphere_init(sphere_shape *s, vec3 center, real radius)
 	s->center = center;
 	s->radius = radius;
 	s->radius2 = real_mul2(radius, radius);
-#if REAL_FIXED
-	/* From r^2 (Newton, good to 2^-29): no division kernel is linked for it alone. */
-	s->per_radius = real2_reciprocal_sqrt(s->radius2);
-#else
-	s->per_radius = real_reciprocal_of(radius);
-#endif
+	/* Fixed point: from r^2 (Newton, good to 2^-29), so that no division kernel is
+	 * linked for it alone. */
+	s->per_radius = REAL_FIXED ? real2_reciprocal_sqrt(s->radius2) : real_reciprocal_of(radius);
 }
 
 int sphere_bounds(const sphere_shape *s, vec3 *lo, vec3 *hi)
@@ -111,6 +108,16 @@ int sphere_coarse_miss(const sphere_shape *s, dir3 d, const vec3 *f, const real2
 {
 	return coarse_miss_of(s, d, f, c);
 }
+#else
+/* Floating point has no coarse test: the careful one below decides every ray. */
+RT_INLINE int coarse_miss_of(const sphere_shape *s, dir3 d, const vec3 *f, const real2 *c)
+{
+	(void)s;
+	(void)d;
+	(void)f;
+	(void)c;
+	return 0;
+}
 #endif
 
 int sphere_intersect_from(const object *o, const ray *r, const origin_term *k, real tmin,
@@ -127,17 +134,13 @@ int sphere_intersect_from(const object *o, const ray *r, const origin_term *k, r
 		/* vec_sub, inline: most of these rays end at the coarse test two lines on. */
 		own.f = vec_make(real_add(r->origin.x, -s->center.x), real_add(r->origin.y, -s->center.y),
 				 real_add(r->origin.z, -s->center.z));
-#if REAL_FIXED
 		if (coarse_miss_of(s, r->dir, &own.f, NULL))
 			return 0;
-#endif
 		own.u.c = vec_dot2(own.f, own.f) - s->radius2;
 		k = &own;
 	}
-#if REAL_FIXED
 	else if (coarse_miss_of(s, r->dir, &k->f, &k->u.c))
 		return 0;
-#endif
 	/* f through the pointer, not copied: a copy of k's 8-byte aligned terms is a
 	 * memcpy call on the M0. */
 	f = &k->f;
@@ -169,10 +172,9 @@ int sphere_intersect_from(const object *o, const ray *r, const origin_term *k, r
 		 * products already (sphere_coarse_miss), and leaves the few clear misses
 		 * that escape it to the careful path: the same images, in less code and
 		 * time than the exact test's 64-bit products. */
-#if !REAL_FIXED
-		if (c > 0 && real_mul2(b, b) - c < -(real2_error_bound(b, c) + real2_unit_slack(c)))
+		if (!REAL_FIXED && c > 0 &&
+		    real_mul2(b, b) - c < -(real2_error_bound(b, c) + real2_unit_slack(c)))
 			return 0;
-#endif
 		a = unit_to_real(dir_dot(r->dir, r->dir));
 		/* a = 1 exactly (often, in every type) divides by nothing and scales by nothing:
 		 * the same numbers without the division and the product. */
@@ -203,16 +205,15 @@ int sphere_intersect_from(const object *o, const ray *r, const origin_term *k, r
 		 * takes a reciprocal square root too: on the M0 half the work), and keeps that
 		 * when it is unit to 2^-20: a ray reflected about it is then unit to Q16.16's
 		 * step, which the sphere test's a = |d|^2 sees as 1. */
-#if REAL_FIXED
-		h->normal = dir_times_reciprocal(out, s->per_radius);
-		{
-			unit length2 = dir_dot(h->normal, h->normal);
+		if (REAL_FIXED) {
+			unit length2;
+			h->normal = dir_times_reciprocal(out, s->per_radius);
+			length2 = dir_dot(h->normal, h->normal);
 			if (length2 < UNIT_C(1.0) - 1024 || length2 > UNIT_C(1.0) + 1024)
 				h->normal = dir_normalize(out);
+		} else {
+			h->normal = dir_normalize(out);
 		}
-#else
-		h->normal = dir_normalize(out);
-#endif
 		h->shading = h->normal;
 	}
 	return 1;
