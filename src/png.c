@@ -82,7 +82,8 @@ static void arena_free(void *p)
 #define STBIW_ASSERT(x) ((void)0)
 #define STBI_WRITE_NO_STDIO
 #define STB_IMAGE_WRITE_IMPLEMENTATION
-#if defined(__GNUC__)
+/* The vendored file is not held to rt's warnings. GCC and clang (the compilers rt's flags
+ * are written for) know these pragmas; C99 has other compilers ignore them. */
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wcast-qual"
 #pragma GCC diagnostic ignored "-Wmissing-prototypes"
@@ -92,11 +93,8 @@ static void arena_free(void *p)
 #pragma GCC diagnostic ignored "-Wdouble-promotion"
 #pragma GCC diagnostic ignored "-Wunused-parameter"
 #pragma GCC diagnostic ignored "-Wpedantic"
-#endif
 #include "vendor/stb_image_write.h"
-#if defined(__GNUC__)
 #pragma GCC diagnostic pop
-#endif
 
 /* stb's write callback returns nothing: remember a failed write for png_write. */
 typedef struct {
