@@ -125,11 +125,12 @@ int scene_intersect_from(const accel *a, const ray *r, const origin_terms *k, in
 {
 	const scene *s = accel_scene(a);
 	const bvh_tree *tree = accel_tree(a);
-	int i, found = 0;
+	int found = 0;
 	if (tree) {
 		found = bvh_nearest(s, tree, r, skip, tmax, h);
 	} else {
 		uint32_t candidates = k ? k->candidates : ~(uint32_t)0;
+		int i;
 		for (i = 0; i < s->object_count; i++) {
 			/* Each hit shrinks tmax, so later objects only report nearer hits. */
 			if (i != skip && (i >= 32 || candidates >> i & 1) &&

@@ -109,23 +109,30 @@ static real2 area_2d(vec2 a, vec2 b, vec2 c)
 /* Shading normal of a patch at p: barycentric interpolation of the vertex normals in
  * the fan triangle (0, i, i+1) that holds p (SPD patches are all triangles). The weights
  * are ratios of areas, which the projection that drops the normal's largest axis scales
- * all alike (by that component, at least 1/sqrt(3)): they are taken there, from the
- * vertices the parser projected, in two products each rather than the six and three
- * scalings of areas along the normal in 3D. */
+ * all alike (by that component, at least 1/sqrt(3)): they are taken there, in two
+ * products each rather than the six and three scalings of areas along the normal in 3D.
+ * Projecting is choosing two coordinates: done here, for the hit's triangle, it needs
+ * no stored copy of the vertices. */
 static dir3 patch_normal(const scene *s, const polygon_shape *poly, vec3 p)
 {
-	const vec2 *uv = s->projected + poly->first;
+	const vec3 *v = s->vertices + poly->first;
 	const dir3 *vn = s->normals + poly->first;
-	vec2 q = polygon_project(p, poly->axis);
+	vec2 q = polygon_project(p, poly->axis), first = polygon_project(v[0], poly->axis);
+	vec2 next = polygon_project(v[1], poly->axis);
 	int i;
 	for (i = 1; i + 1 < poly->count; i++) {
-		real2 whole = area_2d(uv[0], uv[i], uv[i + 1]);
-		real2 a0 = area_2d(q, uv[i], uv[i + 1]);
-		real2 a1 = area_2d(uv[0], q, uv[i + 1]);
-		real2 a2 = whole - a0 - a1;
+		/* The fan triangle (0, i, i + 1), projected as the point is. */
+		vec2 here = next;
+		real2 whole, a0, a1, a2;
+		int sense;
+		next = polygon_project(v[i + 1], poly->axis);
+		whole = area_2d(first, here, next);
+		a0 = area_2d(q, here, next);
+		a1 = area_2d(first, q, next);
+		a2 = whole - a0 - a1;
 		/* The projection may mirror the polygon: the signs that count are those
 		 * relative to the whole triangle's. */
-		int sense = whole < 0 ? -1 : 1;
+		sense = whole < 0 ? -1 : 1;
 		if (whole != 0 && ((a0 * sense >= 0 && a1 * sense >= 0 && a2 * sense >= 0) ||
 				   i + 2 == poly->count)) {
 			/* Barycentric weights: each area over the whole. */
@@ -203,7 +210,6 @@ static vec3 centroid_of(const vec3 *v, int count)
 void polygon_init(scene *s, polygon_shape *poly, dir3 normal, int first, int count, int patch)
 {
 	vec3 centroid;
-	int i;
 	poly->normal = normal;
 	/* The plane passes through the centroid: the best fit for slightly non-planar input. */
 	centroid = centroid_of(s->vertices + first, count);
@@ -215,9 +221,8 @@ void polygon_init(scene *s, polygon_shape *poly, dir3 normal, int first, int cou
 	poly->axis = unit_fabs(poly->normal.x) > unit_fabs(poly->normal.y)
 			     ? (unit_fabs(poly->normal.x) > unit_fabs(poly->normal.z) ? 0 : 2)
 			     : (unit_fabs(poly->normal.y) > unit_fabs(poly->normal.z) ? 1 : 2);
-	for (i = 0; i < count; i++)
-		s->projected[first + i] = polygon_project(s->vertices[first + i], poly->axis);
 	if (patch) {
+		int i;
 		/* A zero vertex normal falls back to the face normal. */
 		for (i = 0; i < count; i++) {
 			dir3 *n = &s->normals[first + i];

@@ -93,7 +93,7 @@ typedef struct {
 	real offset;
 } halfspace;
 
-/* A polygon vertex projected to its plane's 2D coordinates (see polygon_shape.axis). */
+/* A point projected to a polygon's 2D coordinates (see polygon_shape.axis). */
 typedef struct {
 	real u, v;
 } vec2;
@@ -120,9 +120,8 @@ typedef struct {
 	light lights[RT_MAX_LIGHTS];
 	object objects[RT_MAX_OBJECTS];
 	vec3 vertices[RT_MAX_VERTICES];
-	/* Patches only (one unused slot each where RT_SHAPE_PATCH leaves them out): */
-	dir3 normals[RT_PATCH_VERTICES];   /* each vertex's shading normal */
-	vec2 projected[RT_PATCH_VERTICES]; /* vertices projected for the shading blend */
+	/* Patches only (one unused slot where RT_SHAPE_PATCH leaves them out): */
+	dir3 normals[RT_PATCH_VERTICES]; /* each vertex's shading normal */
 	halfspace planes[RT_MAX_PLANES];
 } scene;
 

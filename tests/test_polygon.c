@@ -14,11 +14,10 @@
 /* Several megabytes: static, never on the stack. */
 static scene s;
 
-/* Appends a vertex and its projection dropping `axis`, as the parser stores both. */
-static void add_vertex(vec3 v, int axis)
+/* Appends a vertex, as the parser stores it. */
+static void add_vertex(vec3 v)
 {
 	s.vertices[s.vertex_count] = v;
-	s.projected[s.vertex_count] = polygon_project(v, axis);
 	s.vertex_count++;
 }
 
@@ -27,7 +26,7 @@ static int add_xy(const real *xy, int count)
 {
 	int first = s.vertex_count, i;
 	for (i = 0; i < count; i++)
-		add_vertex(vec_make(xy[2 * i], xy[2 * i + 1], REAL_C(0)), 2);
+		add_vertex(vec_make(xy[2 * i], xy[2 * i + 1], REAL_C(0)));
 	return first;
 }
 
@@ -321,7 +320,7 @@ static void add_grid_polygon(grid *g, place_fn place, const double *const *corne
 {
 	int first = s.vertex_count, i;
 	for (i = 0; i < count; i++)
-		add_vertex(place(corner[i]), axis);
+		add_vertex(place(corner[i]));
 	s.objects[g->polygons++] = polygon_object(first, count, normal, offset, axis, 0);
 }
 
@@ -524,10 +523,10 @@ static void test_other_axes(void)
 	s.vertex_count = 0;
 	/* The unit square in the plane x = 2: (y, z) = (0,0) (1,0) (1,1) (0,1), facing +x. */
 	first = s.vertex_count;
-	add_vertex(VEC_C(2, 0, 0), 0);
-	add_vertex(VEC_C(2, 1, 0), 0);
-	add_vertex(VEC_C(2, 1, 1), 0);
-	add_vertex(VEC_C(2, 0, 1), 0);
+	add_vertex(VEC_C(2, 0, 0));
+	add_vertex(VEC_C(2, 1, 0));
+	add_vertex(VEC_C(2, 1, 1));
+	add_vertex(VEC_C(2, 0, 1));
 	o = polygon_object(first, 4, VEC_C(1, 0, 0), REAL_C(2.0), 0, 0);
 	r = test_ray(VEC_C(5, 0.25, 0.75), VEC_C(-1, 0, 0));
 	CHECK(polygon_intersect(&s, &o, &r, 0, REAL_MAX, &h));
@@ -537,10 +536,10 @@ static void test_other_axes(void)
 
 	/* The same square in the plane y = -3, facing -y. */
 	first = s.vertex_count;
-	add_vertex(VEC_C(0, -3, 0), 1);
-	add_vertex(VEC_C(0, -3, 1), 1);
-	add_vertex(VEC_C(1, -3, 1), 1);
-	add_vertex(VEC_C(1, -3, 0), 1);
+	add_vertex(VEC_C(0, -3, 0));
+	add_vertex(VEC_C(0, -3, 1));
+	add_vertex(VEC_C(1, -3, 1));
+	add_vertex(VEC_C(1, -3, 0));
 	o = polygon_object(first, 4, VEC_C(0, -1, 0), REAL_C(3.0), 1, 0);
 	r = test_ray(VEC_C(0.5, -7, 0.5), VEC_C(0, 1, 0));
 	CHECK(polygon_intersect(&s, &o, &r, 0, REAL_MAX, &h));

@@ -437,7 +437,7 @@ static void self_hit_hedron(const char *name, const frame *f)
 /* ---- (1) no self re-hit: polygons ------------------------------------------------- */
 
 /* A 4 x 4 square in the plane through `origin` spanned by e1, e2 (unit, orthogonal),
- * stored as the parser would: unit normal, offset, projection axis, projected vertices.
+ * stored as the parser would: unit normal, offset, projection axis.
  * Returns its object index. */
 static int add_square(const double origin[3], const double e1[3], const double e2[3],
 		      double size, unsigned flags)
@@ -463,7 +463,6 @@ static int add_square(const double origin[3], const double e1[3], const double e
 		for (k = 0; k < 3; k++)
 			p[k] = origin[k] + size * (corner[i][0] * e1[k] + corner[i][1] * e2[k]);
 		s.vertices[first + i] = to_point(p);
-		s.projected[first + i] = polygon_project(s.vertices[first + i], o->u.polygon.axis);
 	}
 	s.vertex_count += 4;
 	return s.object_count++;
@@ -575,7 +574,6 @@ static void add_triangle(const double *a, const double *b, const double *c)
 		double p[3];
 		grid_point(uv[i], p);
 		s.vertices[s.vertex_count] = to_point(p);
-		s.projected[s.vertex_count] = polygon_project(s.vertices[s.vertex_count], 0);
 		s.vertex_count++;
 	}
 }
