@@ -7,9 +7,9 @@
 
 #include "colour.h"
 
-/* stb_image_write has floating-point code (HDR, JPEG): the fixed-point build, which has
- * none at all, goes without PNG (png_available says so). */
-#if !REAL_FIXED
+/* stb_image_write has floating-point code (HDR, JPEG): a build with no floating point at
+ * all (Q16.16) goes without PNG (png_available says so). */
+#if !REAL_FLOAT_FREE
 
 #include <setjmp.h>
 #include <string.h>

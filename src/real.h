@@ -82,6 +82,7 @@ typedef int64_t real2; /* Q32.32: squares and products of lengths */
 /* Numbers have a narrow range and saturate at its ends (reals near 32768, units at 2):
  * code that must stay within range asks this, not which type it is. */
 #define REAL_SATURATES 1
+#define REAL_FLOAT_FREE 1 /* no floating point at all: code that needs it is left out */
 #define REAL_C(x) ((real)((x) * 65536.0 + ((x) < 0 ? -0.5 : 0.5)))
 #define REAL_MAX ((real)0x7FFFFFFF)
 #define real_mul(a, b) fixed_mul((a), (b))
@@ -182,6 +183,7 @@ typedef real unit;
 #define REAL_FIXED 0
 #define REAL_SQUARES_UNDERFLOW 1 /* a number's square can round to 0 */
 #define REAL_SATURATES 0 /* see the Q16.16 block */
+#define REAL_FLOAT_FREE 0
 #define real_mul(a, b) ((a) * (b))
 #define real_add(a, b) ((a) + (b))
 #define real_div(a, b) ((a) / (b))

@@ -120,13 +120,11 @@ typedef struct {
 
 /* object_origin_term (intersect.h) fills them. */
 
-#if REAL_FIXED
 /* 1 only when the sphere test's clear-miss tests would reject the ray with unit
  * direction d (as every ray's is, to 2^-10) from the origin whose offset from the centre
  * is f, given c = |f|^2 - r^2 or NULL: the same tests in 32-bit products of f's and d's
- * top bits (fixed point only). */
+ * top bits (fixed point; floating point has no coarse test, and this is always 0). */
 int sphere_coarse_miss(const sphere_shape *s, dir3 d, const vec3 *f, const real2 *c);
-#endif
 
 /* The sphere and plane tests from the origin's terms k (or NULL: they compute their own):
  * the same results either way. */

@@ -104,10 +104,6 @@ RT_INLINE int coarse_miss_of(const sphere_shape *s, dir3 d, const vec3 *f, const
 	return coarse_miss(fx, fy, fz, d, c_floor);
 }
 
-int sphere_coarse_miss(const sphere_shape *s, dir3 d, const vec3 *f, const real2 *c)
-{
-	return coarse_miss_of(s, d, f, c);
-}
 #else
 /* Floating point has no coarse test: the careful one below decides every ray. */
 RT_INLINE int coarse_miss_of(const sphere_shape *s, dir3 d, const vec3 *f, const real2 *c)
@@ -119,6 +115,11 @@ RT_INLINE int coarse_miss_of(const sphere_shape *s, dir3 d, const vec3 *f, const
 	return 0;
 }
 #endif
+
+int sphere_coarse_miss(const sphere_shape *s, dir3 d, const vec3 *f, const real2 *c)
+{
+	return coarse_miss_of(s, d, f, c);
+}
 
 int sphere_intersect_from(const object *o, const ray *r, const origin_term *k, real tmin,
 			  real tmax, hit *h)
