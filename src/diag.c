@@ -9,13 +9,18 @@
 
 static diag_sink_fn current_sink = diag_standard_error;
 static void *current_ctx;
-static int muted;
+static int muted, quiet;
 
 int diag_mute(int on)
 {
 	int was = muted;
 	muted = on;
 	return was;
+}
+
+void diag_quiet(int on)
+{
+	quiet = on;
 }
 
 void diag_set_sink(diag_sink_fn sink, void *ctx)
@@ -88,6 +93,8 @@ void diag_error(const char *file, int line, const char *fmt, ...)
 void diag_warning(const char *file, int line, const char *fmt, ...)
 {
 	va_list ap;
+	if (quiet)
+		return;
 	va_start(ap, fmt);
 	emit(file, line, "warning: ", fmt, ap);
 	va_end(ap);

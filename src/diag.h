@@ -17,6 +17,9 @@ void diag_standard_error(void *ctx, const char *message);
 /* Silences all messages while on (for a trial pass); returns the previous setting. */
 int diag_mute(int on);
 
+/* Silences warnings while on (-q); errors are always reported. */
+void diag_quiet(int on);
+
 #if defined(__GNUC__)
 #define RT_PRINTF(f, a) __attribute__((format(printf, f, a)))
 #else

@@ -40,6 +40,7 @@ static const char usage_text[] =
 	"               a render across processes: see tools/render-parallel)\n"
 	"  --spd        SPD testing procedure: corner rays, depth 5, no weight cutoff\n"
 	"  --stats      print ray counts and timings on standard error\n"
+	"  -q, --quiet  no warnings (a skipped degenerate object); errors still print\n"
 	"  --time-limit S  stop after S seconds of wall-clock time (a decimal, e.g.\n"
 	"               2.5): exit status 1, no -o file written or replaced\n"
 	"  --size       print the image size the other options give, as 'W H', and exit\n"
@@ -63,6 +64,7 @@ typedef struct {
 	int row_first, row_end; /* --rows: [first, end); end 0 for all rows */
 	int spd;
 	int stats;
+	int quiet;     /* -q: no warnings */
 	int size_only; /* --size: print the image size and stop */
 	const char *time_limit; /* --time-limit as given; NULL for none */
 	unsigned long long time_limit_micros;
@@ -178,6 +180,8 @@ static int parse_options(int argc, char **argv, options *o)
 			return stdout_status();
 		} else if (strcmp(a, "--stats") == 0) {
 			o->stats = 1;
+		} else if (strcmp(a, "-q") == 0 || strcmp(a, "--quiet") == 0) {
+			o->quiet = 1;
 		} else if (strcmp(a, "--size") == 0) {
 			o->size_only = 1;
 		} else if (strcmp(a, "--spd") == 0) {
@@ -306,6 +310,7 @@ int main(int argc, char **argv)
 
 	if (status >= 0)
 		return status;
+	diag_quiet(opt.quiet);
 	if (opt.time_limit &&
 	    !output_time_limit(opt.scene_path, opt.time_limit_micros, opt.time_limit))
 		return 1;

@@ -627,6 +627,22 @@ for limit in 0 0.0000001 -1 abc 1.5s 2.5.1 .5 100000001 ''; do
 	expect_err "--time-limit '$limit'" "bad time limit"
 done
 
+# ---- quiet ---------------------------------------------------------------------------
+# -q and --quiet silence warnings (a skipped degenerate object) and nothing else: the
+# image is the same, errors still print.
+run -s 16x12 tests/good/16-zero-area-polygon.nff
+expect_err "a skipped polygon warns" "warning:"
+cp "$tmp/out" "$tmp/warned.ppm"
+for q in -q --quiet; do
+	run $q -s 16x12 tests/good/16-zero-area-polygon.nff
+	expect_status "$q with a warning" 0
+	expect_no_stderr "$q with a warning"
+	expect_same "$q: the same image" "$tmp/out" "$tmp/warned.ppm"
+	run $q tests/bad/58-from-equals-at.nff
+	expect_status "$q with an error" 1
+	expect_err "$q with an error" "58-from-equals-at.nff:2: view:"
+done
+
 # ---- memory --------------------------------------------------------------------------
 # The small-memory build (make build/rt-small) renders, PNG too, in 40 MB of address space,
 # where the default build (109 MiB of static arrays, README "Memory") cannot even start.
