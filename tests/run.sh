@@ -4,7 +4,7 @@
 #   unit tests (normal and ASan+UBSan builds), command-line tests, golden renders, the
 #   malformed and unusual scenes of tests/bad and tests/good (bad.sh), fixed point against
 #   the reference (fixed.sh) and the hard scenes against the visibility oracle in every
-#   number type (watertight.sh).
+#   number type (watertight.sh), and the documentation against the program (docs.sh).
 cd "$(dirname "$0")/.." || exit 1
 . tests/lib.sh
 
@@ -47,6 +47,7 @@ for script in tests/cli.sh tests/golden.sh tests/bad.sh; do
 	tally "$name-sanitized" "$(RT=./build/san/rt sh "$script" 2>&1)"
 done
 tally fixed "$(sh tests/fixed.sh 2>&1)"
+tally docs "$(RT=./rt sh tests/docs.sh 2>&1)"
 # MemorySanitizer (uninitialised reads) where clang is present: `make test` built these.
 if command -v clang >/dev/null 2>&1; then
 	tally unit-msan "$(./build/msan/unit-tests 2>&1)"
