@@ -32,7 +32,7 @@ static const char usage_text[] =
 	"  -d N         ray tree depth, 1 to " RT_STRINGIFY(RT_MAX_DEPTH) " (eye ray = 1)\n"
 	"  --ascii      ASCII-art preview (7-bit, no escape sequences)\n"
 	"  --ansi       colour preview with half-blocks (24-bit if COLORTERM says so,\n"
-	"               else 256 colours; ASCII when NO_COLOR is set)\n"
+	"               else 256 colours), whatever NO_COLOR and TERM say\n"
 	"  --cols N     preview width in characters (default: the terminal's, else 80)\n"
 	"  --ids        instead of colours, write a 16-bit PGM of the object each pixel's\n"
 	"               eye ray hits first (1 + its index in the scene; 0 for none)\n"
@@ -65,6 +65,7 @@ typedef struct {
 	int spd;
 	int stats;
 	int quiet;     /* -q: no warnings */
+	int chosen;    /* the preview is rt's choice for a terminal, not asked for */
 	int size_only; /* --size: print the image size and stop */
 	const char *time_limit; /* --time-limit as given; NULL for none */
 	unsigned long long time_limit_micros;
@@ -255,8 +256,10 @@ static int parse_options(int argc, char **argv, options *o)
 	if (!o->scene_path)
 		return usage_error("no scene file given%s", "");
 	/* On a terminal, binary PPM would only garble it: show a preview instead. */
-	if (o->format == FORMAT_DEFAULT)
-		o->format = !o->output_path && term_is_tty(1) ? FORMAT_ANSI : FORMAT_PPM;
+	if (o->format == FORMAT_DEFAULT) {
+		o->chosen = !o->output_path && term_is_tty(1);
+		o->format = o->chosen ? FORMAT_ANSI : FORMAT_PPM;
+	}
 	if (o->row_end && o->format != FORMAT_PPM && o->format != FORMAT_IDS)
 		return usage_error("--rows writes PPM bands only%s", "");
 	if (o->spd && !RT_CORNER_SAMPLING)
@@ -324,7 +327,8 @@ int main(int argc, char **argv)
 	if (opt.format == FORMAT_ASCII || opt.format == FORMAT_ANSI) {
 		/* A preview traces its own, smaller image: one ray per half cell. */
 		if (opt.format == FORMAT_ANSI)
-			opt.format = term_color_mode() == PREVIEW_ASCII ? FORMAT_ASCII : FORMAT_ANSI;
+			opt.format = term_color_mode(!opt.chosen) == PREVIEW_ASCII ? FORMAT_ASCII
+										   : FORMAT_ANSI;
 		preview_size(opt.columns ? opt.columns : term_columns(), width, height, &width,
 			     &height);
 	}
@@ -369,7 +373,7 @@ int main(int argc, char **argv)
 	case FORMAT_ASCII:
 	case FORMAT_ANSI:
 		preview_sink_init(&sinks.preview,
-				  opt.format == FORMAT_ASCII ? PREVIEW_ASCII : term_color_mode(),
+				  opt.format == FORMAT_ASCII ? PREVIEW_ASCII : term_color_mode(!opt.chosen),
 				  output_write, &out);
 		target = &sinks.preview.base;
 		break;
@@ -378,7 +382,8 @@ int main(int argc, char **argv)
 		target = &sinks.ppm.base;
 	}
 	/* The bar would garble a preview drawn on the same terminal. */
-	progress_start(&bar, term_is_tty(2) && !(opt.output_path == NULL && term_is_tty(1)),
+	progress_start(&bar,
+		       term_is_tty(2) && !term_is_dumb() && !(opt.output_path == NULL && term_is_tty(1)),
 		       &the_tracer.stats);
 	ok = render_image(&the_tracer, &cam, opt.spd ? SAMPLE_CORNERS : SAMPLE_CENTRE,
 			  opt.row_first, opt.row_end ? opt.row_end : height, target, progress_update,

@@ -35,11 +35,18 @@ int term_columns(void)
 	return 80;
 }
 
-enum preview_mode term_color_mode(void)
+int term_is_dumb(void)
 {
-	const char *no_color = getenv("NO_COLOR"), *term = getenv("TERM");
-	const char *colorterm = getenv("COLORTERM");
-	if ((no_color && *no_color) || (term && strcmp(term, "dumb") == 0))
+	const char *term = getenv("TERM");
+	return term && strcmp(term, "dumb") == 0;
+}
+
+enum preview_mode term_color_mode(int asked)
+{
+	const char *no_color = getenv("NO_COLOR"), *colorterm = getenv("COLORTERM");
+	/* A colour asked for on the command line wins over NO_COLOR (no-color.org) and over
+	 * TERM; the preview rt chooses itself for a terminal honours both. */
+	if (!asked && ((no_color && *no_color) || term_is_dumb()))
 		return PREVIEW_ASCII;
 	if (colorterm && (strcmp(colorterm, "truecolor") == 0 || strcmp(colorterm, "24bit") == 0))
 		return PREVIEW_ANSI_24;

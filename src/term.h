@@ -12,9 +12,13 @@ int term_is_tty(int fd);
 /* Columns for a preview on standard output: its terminal's width, else $COLUMNS, else 80. */
 int term_columns(void);
 
-/* The preview a colour request gets here: 24-bit when COLORTERM says truecolor or 24bit,
- * else 256 colours; plain ASCII when NO_COLOR is set and non-empty or TERM is dumb. */
-enum preview_mode term_color_mode(void);
+/* Is TERM dumb (a terminal that takes no escape sequences: no colour, no progress bar)? */
+int term_is_dumb(void);
+
+/* The colour preview here: 24-bit when COLORTERM says truecolor or 24bit, else 256
+ * colours. Unless the colours were asked for (asked = 1: --ansi, -o FILE.ans), plain
+ * ASCII when NO_COLOR is set and non-empty or TERM is dumb. */
+enum preview_mode term_color_mode(int asked);
 
 /* Progress on standard error: shown only when it is a terminal and the render looks like
  * taking more than about a second; redrawn at most ten times a second, erased at the end. */

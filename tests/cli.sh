@@ -534,8 +534,12 @@ COLORTERM= NO_COLOR= run --ansi --cols 30 scenes/mirror-spheres.nff
 if grep -q "${esc}\[38;5;" "$tmp/out" && ! grep -q "${esc}\[38;2;" "$tmp/out"; then ok; else
 	bad "--ansi without COLORTERM: expected 256 colours only"
 fi
+# A colour asked for on the command line wins over NO_COLOR and TERM (no-color.org); the
+# preview rt chooses for a terminal itself honours both (below, under `script`).
 NO_COLOR=1 COLORTERM=truecolor run --ansi --cols 30 scenes/mirror-spheres.nff
-if grep -q "$esc" "$tmp/out"; then bad "NO_COLOR: escape sequences written"; else ok; fi
+if grep -q "${esc}\[38;2;" "$tmp/out"; then ok; else bad "NO_COLOR with --ansi: no colours"; fi
+NO_COLOR=1 TERM=dumb run -o "$tmp/asked.ans" --cols 30 scenes/mirror-spheres.nff
+if grep -q "$esc" "$tmp/asked.ans"; then ok; else bad "NO_COLOR, TERM=dumb, -o .ans: no colours"; fi
 run -o "$tmp/image.png" scenes/glass.nff
 expect_status "-o .png" 0
 "$RT" scenes/glass.nff >"$tmp/image.ppm"
@@ -610,6 +614,31 @@ took=$(($(date +%s) - began))
 expect_status "--time-limit" 1
 expect_err "--time-limit" "slow.nff: the time limit of 0.3 seconds was reached; no image written"
 if [ "$took" -le 5 ]; then ok; else bad "--time-limit 0.3: took $took s"; fi
+
+# ---- terminals (through script(1), which gives rt a terminal) --------------------------
+# The preview rt chooses for a terminal has no escape sequence under NO_COLOR or TERM=dumb;
+# the progress bar (standard error on a terminal, a render of over a second) none under
+# TERM=dumb, and its escapes under another TERM show the check can see them.
+if command -v script >/dev/null 2>&1 && script -qec true /dev/null >/dev/null 2>&1; then
+	for env in "NO_COLOR=1 TERM=xterm" "NO_COLOR= TERM=dumb"; do
+		env $env script -qec "'$RT' --cols 30 scenes/mirror-spheres.nff" /dev/null \
+			>"$tmp/tty" 2>&1
+		if grep -q '#' "$tmp/tty" && ! grep -q "$esc" "$tmp/tty"; then ok; else
+			bad "the preview on a terminal with $env: escape sequences, or no preview"
+		fi
+	done
+	for term in xterm dumb; do
+		TERM=$term script -qec "'$RT' -d 8 --time-limit 1.5 -o '$tmp/bar.ppm' '$tmp/slow.nff'" \
+			/dev/null >"$tmp/tty" 2>&1
+		if [ $term = dumb ]; then
+			if grep -q "$esc" "$tmp/tty"; then bad "TERM=dumb: the progress bar's escapes"; else ok; fi
+		elif grep -q "rows" "$tmp/tty" && grep -q "$esc" "$tmp/tty"; then ok; else
+			bad "TERM=xterm: no progress bar to see ($(head -c 200 "$tmp/tty"))"
+		fi
+	done
+else
+	echo "cli.sh: script(1) not found; the terminal checks are skipped"
+fi
 if [ "$(cat "$tmp/limit/old.ppm")" = kept ] && [ "$(ls "$tmp/limit")" = old.ppm ]; then ok; else
 	bad "--time-limit: the old file or its folder changed: $(ls "$tmp/limit")"
 fi
