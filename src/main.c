@@ -2,6 +2,7 @@
  * See LICENSE for copyright and licence. */
 #define _POSIX_C_SOURCE 200809L
 
+#include <ctype.h>
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -93,7 +94,8 @@ static int parse_int(const char *text, char stop, long min, long max, int *out,
 		return 0;
 	errno = 0;
 	value = strtol(text, &end, 10);
-	if (errno || *end != stop || value < min || value > max)
+	/* An x between numbers may be written X (640X480). */
+	if (errno || (*end != stop && !(stop == 'x' && *end == 'X')) || value < min || value > max)
 		return 0;
 	*out = (int)value;
 	if (rest)
@@ -129,6 +131,18 @@ static unsigned long long parse_seconds(const char *text)
 	return micros > TIME_LIMIT_MAX_SECONDS * 1000000u ? 0 : micros;
 }
 
+/* Does the name end with `ending` (lower case), in either case (IMAGE.PNG)? */
+static int ends_with(const char *name, size_t n, const char *ending)
+{
+	size_t k = strlen(ending), i;
+	if (n <= k)
+		return 0;
+	for (i = 0; i < k; i++)
+		if (tolower((unsigned char)name[n - k + i]) != ending[i])
+			return 0;
+	return 1;
+}
+
 /* The output format a file name asks for, by its ending. */
 static enum format format_of(const char *path)
 {
@@ -138,11 +152,9 @@ static enum format format_of(const char *path)
 	} endings[] = {{".ppm", FORMAT_PPM},   {".png", FORMAT_PNG}, {".txt", FORMAT_ASCII},
 		       {".ans", FORMAT_ANSI}, {".pgm", FORMAT_IDS}};
 	size_t n = strlen(path), i;
-	for (i = 0; i < sizeof endings / sizeof endings[0]; i++) {
-		size_t k = strlen(endings[i].ending);
-		if (n > k && strcmp(path + n - k, endings[i].ending) == 0)
+	for (i = 0; i < sizeof endings / sizeof endings[0]; i++)
+		if (ends_with(path, n, endings[i].ending))
 			return endings[i].format;
-	}
 	return FORMAT_DEFAULT;
 }
 

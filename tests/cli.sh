@@ -656,6 +656,17 @@ for limit in 0 0.0000001 -1 abc 1.5s 2.5.1 .5 100000001 ''; do
 	expect_err "--time-limit '$limit'" "bad time limit"
 done
 
+# ---- names in either case --------------------------------------------------------------
+# An image's name and size may be written in capitals: IMAGE.PNG is a PNG, 16X12 a size.
+run -s 16X12 -o "$tmp/CAPS.PNG" scenes/glass.nff
+expect_status "-s 16X12 -o CAPS.PNG" 0
+"$RT" -s 16x12 scenes/glass.nff >"$tmp/caps.ppm"
+if python3 tests/pngcheck.py "$tmp/CAPS.PNG" "$tmp/caps.ppm"; then ok; else
+	bad "-o CAPS.PNG: not the PNG of the same image"
+fi
+run -s 16x12 -o "$tmp/Mixed.Ppm" scenes/glass.nff
+expect_same "-o Mixed.Ppm" "$tmp/Mixed.Ppm" "$tmp/caps.ppm"
+
 # ---- quiet ---------------------------------------------------------------------------
 # -q and --quiet silence warnings (a skipped degenerate object) and nothing else: the
 # image is the same, errors still print.
