@@ -22,13 +22,17 @@
 
 static const char usage_text[] =
 	"Usage: rt [OPTION]... SCENE\n"
-	"Render SCENE (NFF with rt's extensions) by recursive ray tracing.\n"
+	"Render SCENE (NFF with rt's extensions; - reads standard input) by recursive\n"
+	"ray tracing.\n"
 	"The image goes to standard output as binary PPM; on a terminal, rt shows a\n"
 	"preview instead.\n"
 	"\n"
 	"  -o FILE      write to FILE, in the format its name ends with: .ppm, .png,\n"
 	"               .txt (ASCII preview), .ans (ANSI colour preview) or .pgm\n"
-	"               (object IDs); FILE is replaced only when the render succeeds\n"
+	"               (object IDs); FILE is replaced only when the render succeeds;\n"
+	"               - is standard output\n"
+	"  -f, --format FORMAT\n"
+	"               ppm, png, txt, ans or pgm, where no file name says it\n"
 	"  -s WxH       image size in pixels, overriding the scene's resolution\n"
 	"  -d N         ray tree depth, 1 to " RT_STRINGIFY(RT_MAX_DEPTH) " (eye ray = 1)\n"
 	"  --ascii      ASCII-art preview (7-bit, no escape sequences)\n"
@@ -56,8 +60,10 @@ enum format { FORMAT_DEFAULT, FORMAT_PPM, FORMAT_PNG, FORMAT_ASCII, FORMAT_ANSI,
 RT_STATIC_ASSERT(ids_fit_16_bits, RT_MAX_OBJECTS < 65536);
 
 typedef struct {
-	const char *scene_path;
-	const char *output_path;
+	const char *scene_path;  /* "-": standard input */
+	const char *scene_name;  /* for messages: the path, or <stdin> */
+	const char *output_path; /* NULL: standard output */
+	int to_stdout;           /* -o - */
 	enum format format;
 	int width, height; /* 0: the scene's */
 	int depth;         /* 0: the scene's */
@@ -158,6 +164,19 @@ static enum format format_of(const char *path)
 	return FORMAT_DEFAULT;
 }
 
+/* The format -f names (as a file's ending would, without the dot). */
+static enum format format_of_name(const char *name)
+{
+	static const char *const names[] = {"ppm", "png", "txt", "ans", "pgm"};
+	static const enum format formats[] = {FORMAT_PPM, FORMAT_PNG, FORMAT_ASCII, FORMAT_ANSI,
+					      FORMAT_IDS};
+	size_t i;
+	for (i = 0; i < sizeof names / sizeof names[0]; i++)
+		if (strcmp(name, names[i]) == 0)
+			return formats[i];
+	return FORMAT_DEFAULT;
+}
+
 /* Sets the format, refusing two different ones. */
 static int choose_format(options *o, enum format f, const char *why)
 {
@@ -208,6 +227,7 @@ static int parse_options(int argc, char **argv, options *o)
 			if (status >= 0)
 				return status;
 		} else if (strcmp(a, "-o") == 0 || strcmp(a, "-s") == 0 || strcmp(a, "-d") == 0 ||
+			   strcmp(a, "-f") == 0 || strcmp(a, "--format") == 0 ||
 			   strcmp(a, "--rows") == 0 || strcmp(a, "--cols") == 0 ||
 			   strcmp(a, "--time-limit") == 0) {
 			value = i + 1 < argc ? argv[++i] : NULL;
@@ -216,14 +236,24 @@ static int parse_options(int argc, char **argv, options *o)
 			if (strcmp(a, "-o") == 0) {
 				enum format f = format_of(value);
 				/* One image per run: a second -o is a mistake, not a choice. */
-				if (o->output_path)
+				if (o->output_path || o->to_stdout)
 					return usage_error("more than one output file given ('%s')",
 							   value);
-				if (f == FORMAT_DEFAULT)
-					return usage_error("cannot tell the format of '%s' (name it "
-							   ".ppm, .png, .txt, .ans, or .pgm with --ids)",
-							   value);
+				if (strcmp(value, "-") == 0) {
+					o->to_stdout = 1;
+					continue;
+				}
 				o->output_path = value;
+				/* A name that says no format needs -f (checked once all are read). */
+				status = f == FORMAT_DEFAULT ? -1 : choose_format(o, f, value);
+				if (status >= 0)
+					return status;
+			} else if (strcmp(a, "-f") == 0 || strcmp(a, "--format") == 0) {
+				enum format f = format_of_name(value);
+				if (f == FORMAT_DEFAULT)
+					return usage_error("bad format '%s' (expected ppm, png, txt, ans or "
+							   "pgm)",
+							   value);
 				status = choose_format(o, f, value);
 				if (status >= 0)
 					return status;
@@ -267,9 +297,14 @@ static int parse_options(int argc, char **argv, options *o)
 	}
 	if (!o->scene_path)
 		return usage_error("no scene file given%s", "");
+	o->scene_name = strcmp(o->scene_path, "-") == 0 ? "<stdin>" : o->scene_path;
+	if (o->output_path && o->format == FORMAT_DEFAULT)
+		return usage_error("cannot tell the format of '%s' (name it .ppm, .png, .txt, .ans "
+				   "or .pgm, or give -f)",
+				   o->output_path);
 	/* On a terminal, binary PPM would only garble it: show a preview instead. */
 	if (o->format == FORMAT_DEFAULT) {
-		o->chosen = !o->output_path && term_is_tty(1);
+		o->chosen = !o->output_path && !o->to_stdout && term_is_tty(1);
 		o->format = o->chosen ? FORMAT_ANSI : FORMAT_PPM;
 	}
 	if (o->row_end && o->format != FORMAT_PPM && o->format != FORMAT_IDS)
@@ -327,7 +362,7 @@ int main(int argc, char **argv)
 		return status;
 	diag_quiet(opt.quiet);
 	if (opt.time_limit &&
-	    !output_time_limit(opt.scene_path, opt.time_limit_micros, opt.time_limit))
+	    !output_time_limit(opt.scene_name, opt.time_limit_micros, opt.time_limit))
 		return 1;
 	start = term_micros();
 	if (!load_scene_file(&the_scene, opt.scene_path))
@@ -366,7 +401,7 @@ int main(int argc, char **argv)
 	}
 	why = camera_init(&cam, &the_scene.camera, width, height);
 	if (why) {
-		diag_error(opt.scene_path, 0, "%s", why);
+		diag_error(opt.scene_name, 0, "%s", why);
 		return 1;
 	}
 	depth = opt.spd ? 5 : opt.depth ? opt.depth : the_scene.depth;

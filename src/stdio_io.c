@@ -24,14 +24,24 @@ void diag_standard_error(void *ctx, const char *message)
  * input itself. So no pass reads further into the input than the parser asks for, and
  * an endless input stops at its first error as it does in one pass. */
 typedef struct {
-	const char *path;
+	const char *path; /* "-": standard input */
+	const char *name; /* for messages: the path, or <stdin> */
 	FILE *file; /* the input; held across passes when it is not reopened */
 	FILE *copy; /* what the passes so far read of an input that is not reopened */
 	long copied; /* bytes in copy */
 	long at;     /* the bytes of copy this pass has read */
 	int reopen;  /* a regular file, or one read only once: no copy */
 	int writing; /* copy's last operation was a write (a seek must come between) */
+	int from_stdin;
 } file_reader;
+
+/* Closes the input (standard input stays open: it is not rt's). */
+static void close_input(file_reader *f)
+{
+	if (f->file && f->file != stdin)
+		fclose(f->file);
+	f->file = NULL;
+}
 
 static int file_open(void *ctx, int again)
 {
@@ -43,29 +53,29 @@ static int file_open(void *ctx, int again)
 		f->writing = 0;
 		return fseek(f->copy, 0, SEEK_SET) == 0;
 	}
-	f->file = fopen(f->path, "rb");
+	/* Standard input is never reopened: it is read through a copy when another pass
+	 * follows, as a pipe is, whatever it is (its position is where the shell left it). */
+	f->file = f->from_stdin ? stdin : fopen(f->path, "rb");
 	if (!f->file) {
-		diag_error(f->path, 0, "cannot open: %s", strerror(errno));
+		diag_error(f->name, 0, "cannot open: %s", strerror(errno));
 		return 0;
 	}
 	/* A file whose kind cannot be told is taken as a regular one. */
 	known = fstat(fileno(f->file), &st) == 0;
 	/* A folder opens, and then reads as an empty file ("no view"): say what it is. */
 	if (known && S_ISDIR(st.st_mode)) {
-		diag_error(f->path, 0, "cannot read: %s", strerror(EISDIR));
-		fclose(f->file);
-		f->file = NULL;
+		diag_error(f->name, 0, "cannot read: %s", strerror(EISDIR));
+		close_input(f);
 		return 0;
 	}
-	f->reopen = !known || S_ISREG(st.st_mode) || !again;
+	f->reopen = (!f->from_stdin && (!known || S_ISREG(st.st_mode))) || !again;
 	if (!f->reopen) {
 		f->copy = tmpfile();
 		if (!f->copy) {
-			diag_error(f->path, 0, "cannot keep a copy of the input for its second "
+			diag_error(f->name, 0, "cannot keep a copy of the input for its second "
 					       "reading: %s",
 				   strerror(errno));
-			fclose(f->file);
-			f->file = NULL;
+			close_input(f);
 			return 0;
 		}
 	}
@@ -108,11 +118,11 @@ static int file_read(void *ctx)
 static int file_check(file_reader *f, int ok)
 {
 	if (ok && ferror(f->file)) {
-		diag_error(f->path, 0, "read error");
+		diag_error(f->name, 0, "read error");
 		return 0;
 	}
 	if (ok && f->copy && ferror(f->copy)) {
-		diag_error(f->path, 0, "cannot keep a copy of the input for its second reading");
+		diag_error(f->name, 0, "cannot keep a copy of the input for its second reading");
 		return 0;
 	}
 	return 1;
@@ -122,10 +132,8 @@ static int file_close(void *ctx, int ok)
 {
 	file_reader *f = ctx;
 	int checked = file_check(f, ok);
-	if (f->reopen) {
-		fclose(f->file);
-		f->file = NULL;
-	}
+	if (f->reopen)
+		close_input(f);
 	return checked;
 }
 
@@ -136,15 +144,16 @@ int load_scene_file(scene *s, const char *path)
 	int ok;
 	memset(&f, 0, sizeof f);
 	f.path = path;
+	f.from_stdin = strcmp(path, "-") == 0;
+	f.name = f.from_stdin ? "<stdin>" : path;
 	source.open = file_open;
 	source.read = file_read;
 	source.close = file_close;
 	source.ctx = &f;
-	ok = load_scene_source(s, path, &source);
+	ok = load_scene_source(s, f.name, &source);
 	/* An input read through a copy stays open until the last pass is done. */
 	if (f.copy)
 		fclose(f.copy);
-	if (f.file)
-		fclose(f.file);
+	close_input(&f);
 	return ok;
 }

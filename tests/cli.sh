@@ -656,6 +656,38 @@ for limit in 0 0.0000001 -1 abc 1.5s 2.5.1 .5 100000001 ''; do
 	expect_err "--time-limit '$limit'" "bad time limit"
 done
 
+# ---- standard streams --------------------------------------------------------------
+# `-` is the scene on standard input (named <stdin> in messages), `-o -` the image on
+# standard output, and -f names a format where no file name does.
+"$RT" -s 16x12 scenes/glass.nff >"$tmp/glass.ppm"
+run -s 16x12 - <scenes/glass.nff
+expect_status "- from a file" 0
+expect_same "- from a file" "$tmp/out" "$tmp/glass.ppm"
+cat scenes/glass.nff | "$RT" -s 16x12 - >"$tmp/out" 2>"$tmp/err"
+expect_same "- from a pipe" "$tmp/out" "$tmp/glass.ppm"
+printf 'v\nfrom 0 0 0\n' >"$tmp/short.nff"
+run - <"$tmp/short.nff"
+expect_status "- with an error" 1
+expect_err "- with an error" "rt: <stdin>:2: unexpected end of file"
+run -s 16x12 -o - scenes/glass.nff
+expect_same "-o -" "$tmp/out" "$tmp/glass.ppm"
+run -s 16x12 -o - -f png scenes/glass.nff
+cp "$tmp/out" "$tmp/stdout.png"
+if python3 tests/pngcheck.py "$tmp/stdout.png" "$tmp/glass.ppm"; then ok; else
+	bad "-o - -f png: not the PNG of the same image"
+fi
+run -s 16x12 -o "$tmp/noext" --format ppm scenes/glass.nff
+expect_same "--format ppm, a name without an ending" "$tmp/noext" "$tmp/glass.ppm"
+run -f gif scenes/glass.nff
+expect_status "-f gif" 2
+expect_err "-f gif" "bad format 'gif'"
+run -o "$tmp/x.png" -f ppm scenes/glass.nff
+expect_status "-o x.png -f ppm" 2
+expect_err "-o x.png -f ppm" "conflicting output formats"
+run -o "$tmp/noext" scenes/glass.nff
+expect_status "-o without an ending or -f" 2
+expect_err "-o without an ending or -f" "or give -f"
+
 # ---- names in either case --------------------------------------------------------------
 # An image's name and size may be written in capitals: IMAGE.PNG is a PNG, 16X12 a size.
 run -s 16X12 -o "$tmp/CAPS.PNG" scenes/glass.nff

@@ -120,6 +120,14 @@ if cat "$tmp/pipe.nff" | "$FIXED" /dev/stdin >"$tmp/piped.ppm" 2>>"$tmp/err" &&
 	[ -s "$tmp/file.ppm" ] && cmp -s "$tmp/file.ppm" "$tmp/piped.ppm"; then ok; else
 	bad "scene from a pipe: not the image of the same file ($(head -n 2 "$tmp/err"))"
 fi
+# Standard input as `-`, piped and redirected from the file (never reopened: its
+# position is the shell's): the file's image, through the two passes.
+if cat "$tmp/pipe.nff" | "$FIXED" - >"$tmp/piped.ppm" 2>>"$tmp/err" &&
+	cmp -s "$tmp/file.ppm" "$tmp/piped.ppm" &&
+	"$FIXED" - <"$tmp/pipe.nff" >"$tmp/redirected.ppm" 2>>"$tmp/err" &&
+	cmp -s "$tmp/file.ppm" "$tmp/redirected.ppm"; then ok; else
+	bad "scene from standard input (-): not the image of the same file ($(head -n 2 "$tmp/err"))"
+fi
 if mkfifo "$tmp/fifo" 2>/dev/null; then
 	cat "$tmp/pipe.nff" >"$tmp/fifo" &
 	# A FIFO opened twice would wait for a second writer: bound the wait.
