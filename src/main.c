@@ -137,44 +137,28 @@ static unsigned long long parse_seconds(const char *text)
 	return micros > TIME_LIMIT_MAX_SECONDS * 1000000u ? 0 : micros;
 }
 
-/* Does the name end with `ending` (lower case), in either case (IMAGE.PNG)? */
-static int ends_with(const char *name, size_t n, const char *ending)
-{
-	size_t k = strlen(ending), i;
-	if (n <= k)
-		return 0;
-	for (i = 0; i < k; i++)
-		if (tolower((unsigned char)name[n - k + i]) != ending[i])
-			return 0;
-	return 1;
-}
-
-/* The output format a file name asks for, by its ending. */
-static enum format format_of(const char *path)
-{
-	static const struct {
-		const char *ending;
-		enum format format;
-	} endings[] = {{".ppm", FORMAT_PPM},   {".png", FORMAT_PNG}, {".txt", FORMAT_ASCII},
-		       {".ans", FORMAT_ANSI}, {".pgm", FORMAT_IDS}};
-	size_t n = strlen(path), i;
-	for (i = 0; i < sizeof endings / sizeof endings[0]; i++)
-		if (ends_with(path, n, endings[i].ending))
-			return endings[i].format;
-	return FORMAT_DEFAULT;
-}
-
-/* The format -f names (as a file's ending would, without the dot). */
+/* The format a name gives (-f's, or a file's ending without the dot), in either case
+ * (PNG, IMAGE.PNG). */
 static enum format format_of_name(const char *name)
 {
-	static const char *const names[] = {"ppm", "png", "txt", "ans", "pgm"};
+	static const char names[][4] = {"ppm", "png", "txt", "ans", "pgm"};
 	static const enum format formats[] = {FORMAT_PPM, FORMAT_PNG, FORMAT_ASCII, FORMAT_ANSI,
 					      FORMAT_IDS};
-	size_t i;
-	for (i = 0; i < sizeof names / sizeof names[0]; i++)
-		if (strcmp(name, names[i]) == 0)
+	size_t i, k;
+	for (i = 0; i < sizeof names / sizeof names[0]; i++) {
+		for (k = 0; k < 3 && tolower((unsigned char)name[k]) == names[i][k]; k++)
+			;
+		if (k == 3 && name[3] == '\0')
 			return formats[i];
+	}
 	return FORMAT_DEFAULT;
+}
+
+/* The output format a file name asks for, by its ending (there must be a name before it). */
+static enum format format_of(const char *path)
+{
+	size_t n = strlen(path);
+	return n > 4 && path[n - 4] == '.' ? format_of_name(path + n - 3) : FORMAT_DEFAULT;
 }
 
 /* Sets the format, refusing two different ones. */
