@@ -416,6 +416,9 @@ int main(int argc, char **argv)
 	progress_start(&bar,
 		       term_is_tty(2) && !term_is_dumb() && !(opt.output_path == NULL && term_is_tty(1)),
 		       &the_tracer.stats);
+	/* Ctrl-C, another ending signal or the time limit erases the bar before rt ends. */
+	if (bar.enabled)
+		output_erase_on_end(&bar.drawn);
 	ok = render_image(&the_tracer, &cam, opt.spd ? SAMPLE_CORNERS : SAMPLE_CENTRE,
 			  opt.row_first, opt.row_end ? opt.row_end : height, target, progress_update,
 			  &bar);

@@ -44,9 +44,21 @@ static const int ending_signals[] = {SIGHUP,  SIGINT,  SIGQUIT, SIGILL,    SIGTR
 #define ENDING_SIGNALS (sizeof ending_signals / sizeof ending_signals[0])
 static struct sigaction previous[ENDING_SIGNALS];
 
+/* A line of standard error that an ending run should erase (the progress bar): the
+ * handlers below erase it when *status_line is set. */
+static const volatile sig_atomic_t *status_line;
+
+static void erase_status_line(void)
+{
+	static const char erase[] = "\r\033[K";
+	if (status_line && *status_line && write(STDERR_FILENO, erase, sizeof erase - 1) < 0)
+		return;
+}
+
 static void remove_temp_and_end(int sig)
 {
 	size_t i;
+	erase_status_line();
 	if (temp_live)
 		unlink(temp_path);
 	temp_live = 0;
@@ -79,6 +91,7 @@ static void end_at_time_limit(int sig)
 	static const char nothing[] = "; no image written\n";
 	static const char partly[] = "; the image written so far is incomplete\n";
 	(void)sig;
+	erase_status_line();
 	if (temp_live)
 		unlink(temp_path);
 	temp_live = 0;
@@ -145,6 +158,12 @@ static void catch_ending_signals(void)
 		sigemptyset(&action.sa_mask);
 		sigaction(ending_signals[i], &action, NULL);
 	}
+}
+
+void output_erase_on_end(const volatile sig_atomic_t *line_drawn)
+{
+	status_line = line_drawn;
+	catch_ending_signals();
 }
 
 /* The file a path names after its symbolic links, into `out` (the path itself when it

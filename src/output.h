@@ -4,6 +4,7 @@
 #ifndef RT_OUTPUT_H
 #define RT_OUTPUT_H
 
+#include <signal.h>
 #include <stddef.h>
 #include <stdio.h>
 
@@ -36,6 +37,10 @@ void output_report_error(const output *out);
  * Rows already streamed to standard output or a FIFO stay there, and the message says
  * the image is incomplete. 0, reported, if the timer cannot be set. */
 int output_time_limit(const char *scene, unsigned long long micros, const char *as_given);
+
+/* While *line_drawn is set, a signal that ends the run, or the time limit, first erases
+ * the line standard error's cursor is on (the progress bar's). */
+void output_erase_on_end(const volatile sig_atomic_t *line_drawn);
 
 /* A write callback for the sinks: ctx is the output. */
 int output_write(void *ctx, const void *data, size_t n);

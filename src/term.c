@@ -67,6 +67,19 @@ void progress_start(progress_bar *p, int enabled, const trace_stats *stats)
 	p->last_draw = 0;
 	p->stats = stats;
 	p->drawn = 0;
+	p->samples = p->next = 0;
+}
+
+/* Keeps a sample, the oldest going once the window is full. */
+static void keep_sample(progress_bar *p, unsigned long long now, int done,
+			unsigned long long rays)
+{
+	p->when[p->next] = now;
+	p->rows[p->next] = done;
+	p->rays[p->next] = rays;
+	p->next = (p->next + 1) % PROGRESS_WINDOW;
+	if (p->samples < PROGRESS_WINDOW)
+		p->samples++;
 }
 
 void progress_update(void *ctx, int done, int total)
@@ -85,11 +98,26 @@ void progress_update(void *ctx, int done, int total)
 	if (elapsed < 500000u || elapsed + left < 1000000u || now - p->last_draw < 100000u)
 		return;
 	p->last_draw = now;
+	rays = st->eye_rays + st->shadow_rays + st->reflect_rays + st->refract_rays;
+	{
+		/* Rates over the recent window (the whole render until a sample is kept): the
+		 * rows still to come cost what the last ones did, not the average so far. */
+		int oldest = p->samples < PROGRESS_WINDOW ? 0 : p->next;
+		unsigned long long since = p->samples ? now - p->when[oldest] : elapsed;
+		unsigned long long traced = p->samples ? rays - p->rays[oldest] : rays;
+		int rows = p->samples ? done - p->rows[oldest] : done;
+		if (since > 0 && rows > 0) {
+			left = since / (unsigned)rows * (unsigned)(total - done);
+			elapsed = since;
+			rays = traced;
+		}
+		keep_sample(p, now, done, st->eye_rays + st->shadow_rays + st->reflect_rays +
+						  st->refract_rays);
+	}
 	filled = (int)((long)done * 30 / total);
 	for (i = 0; i < 30; i++)
 		bar[i] = i < filled ? '#' : '.';
 	bar[30] = '\0';
-	rays = st->eye_rays + st->shadow_rays + st->reflect_rays + st->refract_rays;
 	fprintf(stderr, "\r[%s] %d/%d rows  %llu.%02llu Mrays/s  %llu s left \033[K", bar, done,
 		total, rays / elapsed, rays * 100u / elapsed % 100u, (left + 500000u) / 1000000u);
 	fflush(stderr);

@@ -3,6 +3,8 @@
 #ifndef RT_TERM_H
 #define RT_TERM_H
 
+#include <signal.h>
+
 #include "preview.h"
 #include "trace.h"
 
@@ -22,11 +24,20 @@ enum preview_mode term_color_mode(int asked);
 
 /* Progress on standard error: shown only when it is a terminal and the render looks like
  * taking more than about a second; redrawn at most ten times a second, erased at the end. */
+#define PROGRESS_WINDOW 16 /* recent samples (a few seconds) the rates are taken over */
+
 typedef struct {
 	int enabled;
 	unsigned long long start, last_draw; /* microseconds */
 	const trace_stats *stats; /* live ray counts, for rays/s */
-	int drawn;
+	/* The bar is on the screen: a signal or the time limit erases it (output.c). */
+	volatile sig_atomic_t drawn;
+	/* Recent samples, oldest first once full: when, rows done, rays traced. The time
+	 * left and the rays per second come from the oldest kept and now, so that they
+	 * follow the rows being traced, not the render's average. */
+	unsigned long long when[PROGRESS_WINDOW], rays[PROGRESS_WINDOW];
+	int rows[PROGRESS_WINDOW];
+	int samples, next;
 } progress_bar;
 
 void progress_start(progress_bar *p, int enabled, const trace_stats *stats);
