@@ -38,7 +38,8 @@ static const char usage_text[] =
 	"  --ascii      ASCII-art preview (7-bit, no escape sequences)\n"
 	"  --ansi       colour preview with half-blocks (24-bit if COLORTERM says so,\n"
 	"               else 256 colours), whatever NO_COLOR and TERM say\n"
-	"  --cols N     preview width in characters (default: the terminal's, else 80)\n"
+	"  --cols N     preview width in characters (default: the terminal's, else 80;\n"
+	"               no taller than the terminal, less a line for the prompt)\n"
 	"  --ids        instead of colours, write a 16-bit PGM of the object each pixel's\n"
 	"               eye ray hits first (1 + its index in the scene; 0 for none)\n"
 	"  --rows Y0:Y1 render only rows Y0 to Y1-1, as a PPM of that band (for splitting\n"
@@ -77,6 +78,17 @@ typedef struct {
 	const char *time_limit; /* --time-limit as given; NULL for none */
 	unsigned long long time_limit_micros;
 } options;
+
+/* A preview of a width x height scene that fits the terminal: as wide as it is, and no
+ * taller than its lines less one (the prompt's), the aspect kept (fewer columns where
+ * the height is the bound). */
+static void fit_preview(int width, int height, int *pixels_wide, int *pixels_high)
+{
+	int columns = term_columns(), lines = term_lines();
+	preview_size(columns, width, height, pixels_wide, pixels_high);
+	while (lines > 1 && *pixels_high / 2 > lines - 1 && columns > 1)
+		preview_size(--columns, width, height, pixels_wide, pixels_high);
+}
 
 /* Scene storage is large and lives for the whole run. */
 static scene the_scene;
@@ -360,8 +372,10 @@ int main(int argc, char **argv)
 		if (opt.format == FORMAT_ANSI)
 			opt.format = term_color_mode(!opt.chosen) == PREVIEW_ASCII ? FORMAT_ASCII
 										   : FORMAT_ANSI;
-		preview_size(opt.columns ? opt.columns : term_columns(), width, height, &width,
-			     &height);
+		if (opt.columns)
+			preview_size(opt.columns, width, height, &width, &height);
+		else
+			fit_preview(width, height, &width, &height);
 	}
 	if (opt.size_only) {
 		printf("%d %d\n", width, height);

@@ -35,6 +35,21 @@ int term_columns(void)
 	return 80;
 }
 
+int term_lines(void)
+{
+	struct winsize ws;
+	const char *lines = getenv("LINES");
+	if (isatty(1) && ioctl(1, TIOCGWINSZ, &ws) == 0 && ws.ws_row > 0)
+		return ws.ws_row;
+	if (lines) {
+		char *end;
+		long n = strtol(lines, &end, 10);
+		if (end != lines && *end == '\0' && n > 0 && n <= RT_MAX_HEIGHT)
+			return (int)n;
+	}
+	return 0;
+}
+
 int term_is_dumb(void)
 {
 	const char *term = getenv("TERM");

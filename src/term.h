@@ -14,6 +14,10 @@ int term_is_tty(int fd);
 /* Columns for a preview on standard output: its terminal's width, else $COLUMNS, else 80. */
 int term_columns(void);
 
+/* Lines of the terminal standard output shows: its height, else $LINES, else 0 (no
+ * bound known). */
+int term_lines(void);
+
 /* Is TERM dumb (a terminal that takes no escape sequences: no colour, no progress bar)? */
 int term_is_dumb(void);
 

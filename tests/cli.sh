@@ -636,6 +636,17 @@ if command -v script >/dev/null 2>&1 && script -qec true /dev/null >/dev/null 2>
 			bad "TERM=xterm: no progress bar to see ($(head -c 200 "$tmp/tty"))"
 		fi
 	done
+	# The preview fits the terminal's height too, a line kept for the prompt: a 4:3 scene
+	# on a 160 x 30 terminal is 29 lines (the width alone gave 60); a tall, narrow one is
+	# bound by its width.
+	script -qec "stty rows 30 cols 160; '$RT' scenes/glass.nff" /dev/null >"$tmp/tty" 2>&1
+	lines=$(wc -l <"$tmp/tty")
+	if [ "$lines" -ge 20 ] && [ "$lines" -le 29 ]; then ok; else
+		bad "preview on a 160x30 terminal: $lines lines"
+	fi
+	script -qec "stty rows 100 cols 40; '$RT' scenes/glass.nff" /dev/null >"$tmp/tty" 2>&1
+	lines=$(wc -l <"$tmp/tty")
+	if [ "$lines" -eq 15 ]; then ok; else bad "preview on a 40x100 terminal: $lines lines, expected 15"; fi
 	# The bar is erased before the run ends: the time limit's message starts its own
 	# line, and Ctrl-C (SIGINT) leaves no bar behind.
 	cr=$(printf '\r')
@@ -702,6 +713,16 @@ expect_err "-o x.png -f ppm" "conflicting output formats"
 run -o "$tmp/noext" scenes/glass.nff
 expect_status "-o without an ending or -f" 2
 expect_err "-o without an ending or -f" "or give -f"
+
+# ---- previews that fit ----------------------------------------------------------------
+# LINES bounds a preview's height where standard output is no terminal, as COLUMNS its
+# width: one line less, for the prompt. --cols is taken as given.
+LINES=10 run --ascii scenes/glass.nff
+if [ "$(wc -l <"$tmp/out")" -le 9 ] && [ "$(wc -l <"$tmp/out")" -ge 5 ]; then ok; else
+	bad "LINES=10 --ascii: $(wc -l <"$tmp/out") lines"
+fi
+LINES=10 run --ascii --cols 30 scenes/glass.nff
+if [ "$(wc -l <"$tmp/out")" -eq 12 ]; then ok; else bad "LINES=10 --cols 30: not 12 lines"; fi
 
 # ---- names in either case --------------------------------------------------------------
 # An image's name and size may be written in capitals: IMAGE.PNG is a PNG, 16X12 a size.
