@@ -17,37 +17,37 @@ int term_is_tty(int fd)
 	return isatty(fd);
 }
 
-/* At most RT_MAX_WIDTH, the widest preview. COLUMNS comes from outside: it counts only
- * as a whole number in 1..RT_MAX_WIDTH (atoi would overflow on a long one, and a wider
- * value made the preview fail with a misleading write error). */
+/* An environment variable that holds a whole number in 1..max, else 0. It comes from
+ * outside: atoi would overflow on a long one, and a value past the capacity made the
+ * preview fail with a misleading write error. */
+static int env_count(const char *name, long max)
+{
+	const char *text = getenv(name);
+	char *end;
+	long n;
+	if (!text)
+		return 0;
+	n = strtol(text, &end, 10);
+	return end != text && *end == '\0' && n > 0 && n <= max ? (int)n : 0;
+}
+
+/* At most RT_MAX_WIDTH, the widest preview. */
 int term_columns(void)
 {
 	struct winsize ws;
-	const char *columns = getenv("COLUMNS");
+	int columns;
 	if (isatty(1) && ioctl(1, TIOCGWINSZ, &ws) == 0 && ws.ws_col > 0)
 		return ws.ws_col < RT_MAX_WIDTH ? ws.ws_col : RT_MAX_WIDTH;
-	if (columns) {
-		char *end;
-		long n = strtol(columns, &end, 10);
-		if (end != columns && *end == '\0' && n > 0 && n <= RT_MAX_WIDTH)
-			return (int)n;
-	}
-	return 80;
+	columns = env_count("COLUMNS", RT_MAX_WIDTH);
+	return columns ? columns : 80;
 }
 
 int term_lines(void)
 {
 	struct winsize ws;
-	const char *lines = getenv("LINES");
 	if (isatty(1) && ioctl(1, TIOCGWINSZ, &ws) == 0 && ws.ws_row > 0)
 		return ws.ws_row;
-	if (lines) {
-		char *end;
-		long n = strtol(lines, &end, 10);
-		if (end != lines && *end == '\0' && n > 0 && n <= RT_MAX_HEIGHT)
-			return (int)n;
-	}
-	return 0;
+	return env_count("LINES", RT_MAX_HEIGHT);
 }
 
 int term_is_dumb(void)
