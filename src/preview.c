@@ -5,10 +5,10 @@
  * only when it changes. See LICENSE for copyright and licence. */
 #include "preview.h"
 
+#include <stdint.h>
 #include <stdio.h>
 
 #include "colour.h"
-#include "fixed.h"
 
 const char preview_ramp[] = " .:-=+*#%@";
 #define RAMP_LENGTH (int)(sizeof preview_ramp - 1)
@@ -39,7 +39,7 @@ void preview_size(int columns, int scene_width, int scene_height, int *width, in
 {
 	/* Square pixels, two to a cell: the pixel rows the aspect asks for, rounded to the
 	 * nearest, then up to whole cells. */
-	long pixels = (long)fixed_udiv64((uint64_t)columns * (uint64_t)scene_height +
+	long pixels = (long)wide_udiv((uint64_t)columns * (uint64_t)scene_height +
 					       (uint64_t)(scene_width / 2),
 				       (uint64_t)scene_width);
 	long cells = (pixels + 1) / 2;

@@ -143,6 +143,8 @@ typedef int32_t unit;
  * vector over its length), through real_times_reciprocal. */
 #define unit_reciprocal(r) fixed_unit_reciprocal(r)
 #define real_ldexp(x, e) fixed_ldexp((x), (e))
+/* n / d in 64 bits without the runtime library's division (the M0 has none to spare). */
+#define wide_udiv(n, d) fixed_udiv64((n), (d))
 #else
 #error "rt: choose one of RT_REAL_FLOAT, RT_REAL_DOUBLE, RT_REAL_LONG_DOUBLE, RT_REAL_FIXED"
 #endif
@@ -207,6 +209,7 @@ typedef real real_reciprocal;
 /* Dividing by a length sqrt(w): the root is the divisor, and the length. */
 #define real2_reciprocal_sqrt(w) real2_sqrt(w)
 #define real2_sqrt_by(w, r) ((void)(w), (r))
+#define wide_udiv(n, d) ((n) / (d)) /* n / d of two uint64_t, d > 0 */
 #endif
 
 /* real2 is the type of squared lengths and products of two lengths (dot products of
