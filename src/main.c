@@ -12,6 +12,7 @@
 #include "diag.h"
 #include "load.h"
 #include "output.h"
+#include "parallel.h"
 #include "png.h"
 #include "preview.h"
 #include "render.h"
@@ -35,6 +36,8 @@ static const char usage_text[] =
 	"               ppm, png, txt, ans or pgm, where no file name says it\n"
 	"  -s WxH       image size in pixels, overriding the scene's resolution\n"
 	"  -d N         ray tree depth, 1 to " RT_STRINGIFY(RT_MAX_DEPTH) " (eye ray = 1)\n"
+	"  -j, --jobs N render with N processes, 1 to " RT_STRINGIFY(PARALLEL_MAX_JOBS) " (default: one per\n"
+	"               processor online); the image is the same for every N\n"
 	"  --ascii      ASCII-art preview (7-bit, no escape sequences)\n"
 	"  --ansi       colour preview with half-blocks (24-bit if COLORTERM says so,\n"
 	"               else 256 colours), whatever NO_COLOR and TERM say\n"
@@ -43,7 +46,7 @@ static const char usage_text[] =
 	"  --ids        instead of colours, write a 16-bit PGM of the object each pixel's\n"
 	"               eye ray hits first (1 + its index in the scene; 0 for none)\n"
 	"  --rows Y0:Y1 render only rows Y0 to Y1-1, as a PPM of that band (for splitting\n"
-	"               a render across processes: see tools/render-parallel)\n"
+	"               a render across machines: see docs/speed.md)\n"
 	"  --spd        SPD testing procedure: corner rays, depth 5, no weight cutoff\n"
 	"  --stats      print ray counts and timings on standard error\n"
 	"  -q, --quiet  no warnings (a skipped degenerate object); errors still print\n"
@@ -68,6 +71,7 @@ typedef struct {
 	enum format format;
 	int width, height; /* 0: the scene's */
 	int depth;         /* 0: the scene's */
+	int jobs;          /* processes rendering; 0: one per processor */
 	int columns;       /* preview width, 0: the terminal's */
 	int row_first, row_end; /* --rows: [first, end); end 0 for all rows */
 	int spd;
@@ -224,6 +228,7 @@ static int parse_options(int argc, char **argv, options *o)
 				return status;
 		} else if (strcmp(a, "-o") == 0 || strcmp(a, "-s") == 0 || strcmp(a, "-d") == 0 ||
 			   strcmp(a, "-f") == 0 || strcmp(a, "--format") == 0 ||
+			   strcmp(a, "-j") == 0 || strcmp(a, "--jobs") == 0 ||
 			   strcmp(a, "--rows") == 0 || strcmp(a, "--cols") == 0 ||
 			   strcmp(a, "--time-limit") == 0) {
 			value = i + 1 < argc ? argv[++i] : NULL;
@@ -264,6 +269,11 @@ static int parse_options(int argc, char **argv, options *o)
 				if (!parse_int(value, '\0', 1, RT_MAX_DEPTH, &o->depth, NULL))
 					return usage_error("bad depth '%s' (expected 1 to " RT_STRINGIFY(
 								   RT_MAX_DEPTH) ")",
+							   value);
+			} else if (strcmp(a, "-j") == 0 || strcmp(a, "--jobs") == 0) {
+				if (!parse_int(value, '\0', 1, PARALLEL_MAX_JOBS, &o->jobs, NULL))
+					return usage_error("bad job count '%s' (expected 1 to " RT_STRINGIFY(
+								   PARALLEL_MAX_JOBS) ")",
 							   value);
 			} else if (strcmp(a, "--time-limit") == 0) {
 				o->time_limit = value;
@@ -433,11 +443,13 @@ int main(int argc, char **argv)
 	/* Ctrl-C, another ending signal or the time limit erases the bar before rt ends. */
 	if (bar.enabled)
 		output_erase_on_end(&bar.drawn);
-	ok = render_image(&the_tracer, &cam, opt.spd ? SAMPLE_CORNERS : SAMPLE_CENTRE,
-			  opt.row_first, opt.row_end ? opt.row_end : height, target, progress_update,
-			  &bar);
+	ok = render_parallel(&the_tracer, &cam, opt.spd ? SAMPLE_CORNERS : SAMPLE_CENTRE,
+			     opt.row_first, opt.row_end ? opt.row_end : height, target,
+			     opt.jobs ? opt.jobs : parallel_default_jobs(), progress_update, &bar);
 	progress_finish(&bar);
-	if (!ok && target->error)
+	if (ok < 0)
+		ok = 0; /* a worker's failure, reported */
+	else if (!ok && target->error)
 		diag_error(opt.output_path, 0, "%s", target->error);
 	else if (!ok)
 		output_report_error(&out);

@@ -43,6 +43,10 @@ static const int ending_signals[] = {SIGHUP,  SIGINT,  SIGQUIT, SIGILL,    SIGTR
 				     SIGSYS};
 #define ENDING_SIGNALS (sizeof ending_signals / sizeof ending_signals[0])
 static struct sigaction previous[ENDING_SIGNALS];
+static unsigned char replaced[ENDING_SIGNALS]; /* rt's handler is in place */
+
+/* Called first by the handlers below (output_on_end). */
+static void (*volatile on_end)(void);
 
 /* A line of standard error that an ending run should erase (the progress bar): the
  * handlers below erase it when *status_line is set. */
@@ -58,6 +62,8 @@ static void erase_status_line(void)
 static void remove_temp_and_end(int sig)
 {
 	size_t i;
+	if (on_end)
+		on_end();
 	erase_status_line();
 	if (temp_live)
 		unlink(temp_path);
@@ -91,6 +97,8 @@ static void end_at_time_limit(int sig)
 	static const char nothing[] = "; no image written\n";
 	static const char partly[] = "; the image written so far is incomplete\n";
 	(void)sig;
+	if (on_end)
+		on_end();
 	erase_status_line();
 	if (temp_live)
 		unlink(temp_path);
@@ -156,8 +164,29 @@ static void catch_ending_signals(void)
 		memset(&action, 0, sizeof action);
 		action.sa_handler = remove_temp_and_end;
 		sigemptyset(&action.sa_mask);
-		sigaction(ending_signals[i], &action, NULL);
+		replaced[i] = sigaction(ending_signals[i], &action, NULL) == 0;
 	}
+}
+
+void output_on_end(void (*stop)(void))
+{
+	on_end = stop;
+}
+
+void output_forget(void)
+{
+	size_t i;
+	on_end = NULL;
+	status_line = NULL;
+	temp_live = 0;
+	stream_open = 0;
+	for (i = 0; i < ENDING_SIGNALS; i++)
+		if (replaced[i])
+			sigaction(ending_signals[i], &previous[i], NULL);
+	/* The time limit's timer is the parent's alone (fork does not copy it). */
+	if (limit_armed)
+		signal(SIGALRM, SIG_DFL);
+	limit_armed = 0;
 }
 
 void output_erase_on_end(const volatile sig_atomic_t *line_drawn)

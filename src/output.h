@@ -42,6 +42,14 @@ int output_time_limit(const char *scene, unsigned long long micros, const char *
  * the line standard error's cursor is on (the progress bar's). */
 void output_erase_on_end(const volatile sig_atomic_t *line_drawn);
 
+/* A function that a signal ending the run, or the time limit, calls first (it must be
+ * async-signal-safe): parallel.c's, which stops the workers. NULL for none. */
+void output_on_end(void (*stop)(void));
+
+/* In a forked worker: the parent's signal handlers (put back as they were before rt),
+ * temporary file and status line are not its own. */
+void output_forget(void);
+
 /* A write callback for the sinks: ctx is the output. */
 int output_write(void *ctx, const void *data, size_t n);
 

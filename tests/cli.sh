@@ -586,21 +586,10 @@ for rows in 5:5 7:3 x:4 4 -1:3; do
 	run --rows "$rows" scenes/glass.nff
 	expect_status "--rows $rows" 2
 done
-# (Not for the sanitizer build: one parallel run of the plain build is enough.)
-case $RT in
-*/san/*) ;;
-*)
-	RT="$RT" tools/render-parallel 3 scenes/glass.nff -s 37x23 >"$tmp/parallel.ppm"
-	"$RT" -s 37x23 scenes/glass.nff >"$tmp/whole.ppm"
-	if cmp -s "$tmp/whole.ppm" "$tmp/parallel.ppm"; then ok; else
-		bad "render-parallel: differs from the whole image"
-	fi
-	;;
-esac
 
 # ---- --time-limit ------------------------------------------------------------------
-# 1,000 concentric glass spheres at depth 8: about 10 s at 64x64 unbounded (each ray meets
-# every sphere); the limit ends it at 0.3 s wherever it is, the old file kept.
+# 1,000 concentric glass spheres at depth 8: about 1 s of CPU at 64x64 and 16 s at 256x256
+# (each ray meets every sphere); the limit ends it at 0.3 s wherever it is, the old file kept.
 {
 	printf 'v from 0 0 -30 at 0 0 0 up 0 1 0 angle 40 hither 0.01 resolution 64 64\n'
 	printf 'l -4 3 -20\nl 4 3 -20\nf 0.9 0.9 0.9 0.1 0.5 30 0.9 1.5\n'
@@ -628,7 +617,7 @@ if command -v script >/dev/null 2>&1 && script -qec true /dev/null >/dev/null 2>
 		fi
 	done
 	for term in xterm dumb; do
-		TERM=$term script -qec "'$RT' -d 8 --time-limit 1.5 -o '$tmp/bar.ppm' '$tmp/slow.nff'" \
+		TERM=$term script -qec "'$RT' -d 8 -s 256x256 --time-limit 1.5 -o '$tmp/bar.ppm' '$tmp/slow.nff'" \
 			/dev/null >"$tmp/tty" 2>&1
 		if [ $term = dumb ]; then
 			if grep -q "$esc" "$tmp/tty"; then bad "TERM=dumb: the progress bar's escapes"; else ok; fi
@@ -650,7 +639,7 @@ if command -v script >/dev/null 2>&1 && script -qec true /dev/null >/dev/null 2>
 	# The bar is erased before the run ends: the time limit's message starts its own
 	# line, and Ctrl-C (SIGINT) leaves no bar behind.
 	cr=$(printf '\r')
-	TERM=xterm script -qec "'$RT' -d 8 --time-limit 1 -o '$tmp/bar.ppm' '$tmp/slow.nff'" \
+	TERM=xterm script -qec "'$RT' -d 8 -s 256x256 --time-limit 1 -o '$tmp/bar.ppm' '$tmp/slow.nff'" \
 		/dev/null >"$tmp/tty" 2>&1
 	if grep -q "rows" "$tmp/tty" && grep -q "${cr}${esc}\[Krt: .*the time limit" "$tmp/tty"; then ok; else
 		bad "the time limit's message follows the progress bar on its line"
