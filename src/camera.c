@@ -119,6 +119,44 @@ camera_line camera_line_at(const camera *c, int y2, int x2)
 	return line;
 }
 
+void camera_ray_at(const camera *c, long x, long y, int shift, ray *r)
+{
+	vec3 d;
+	r->origin = c->eye;
+#if REAL_FIXED
+	{
+		/* camera_line_at's sums with the steps scaled by 2^-shift: at multiples of
+		 * 2^shift the products are exact multiples, and the shift gives the same sum. */
+		const unit forward[3] = {c->forward.x, c->forward.y, c->forward.z};
+		int64_t down = ((int64_t)c->height << shift) - y, across = x - ((int64_t)c->width << shift);
+		int i;
+		real p[3];
+		for (i = 0; i < 3; i++) {
+			real2 sum = (real2)forward[i] * 4 + ((c->step[3 + i] * down) >> shift) +
+				    ((c->step[i] * across) >> shift);
+			p[i] = fixed_round_parts((uint32_t)sum, (int32_t)(sum >> 32), c->ray_bits);
+		}
+		d = vec_make(p[0], p[1], p[2]);
+	}
+#else
+	{
+		/* camera_line_at's and camera_next_ray's arithmetic on x and y / 2^shift, which
+		 * are exact (whole numbers below 2^19 over a power of two). */
+		real per_shift = real_ldexp(REAL_C(1.0), -shift);
+		real half_x = real_mul(real_mul(real_from_int(x), per_shift), REAL_C(0.5));
+		real half_y = real_mul(real_mul(real_from_int(y), per_shift), REAL_C(0.5));
+		real v = real_mul(real_times_reciprocal(real_from_int(c->height) - (half_y + half_y),
+							c->per_width),
+				  c->half_width);
+		real u = real_mul(real_times_reciprocal(half_x + half_x - real_from_int(c->width),
+							c->per_width),
+				  c->half_width);
+		d = vec_add(dir_madd(dir_to_vec(c->forward), u, c->right), dir_scale(c->up, v));
+	}
+#endif
+	r->dir = dir_normalize(d);
+}
+
 void camera_next_ray(camera_line *line, ray *r)
 {
 	const camera *c = line->c;

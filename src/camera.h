@@ -50,4 +50,9 @@ typedef struct {
 camera_line camera_line_at(const camera *c, int y2, int x2);
 void camera_next_ray(camera_line *line, ray *r);
 
+/* The eye ray through the point (x, y) / 2^shift half pixels from the top left (shift 0
+ * to 4): between the lines' points, for antialiasing. At a point camera_next_ray reaches
+ * (x and y multiples of 2^shift) it is the same ray, bit for bit. */
+void camera_ray_at(const camera *c, long x, long y, int shift, ray *r);
+
 #endif

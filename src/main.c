@@ -36,6 +36,14 @@ static const char usage_text[] =
 	"               ppm, png, txt, ans or pgm, where no file name says it\n"
 	"  -s WxH       image size in pixels, overriding the scene's resolution\n"
 	"  -d N         ray tree depth, 1 to " RT_STRINGIFY(RT_MAX_DEPTH) " (eye ray = 1)\n"
+	"  -a, --antialias  adaptive antialiasing: rays through the pixels' corners, and\n"
+	"               more rays only where they differ (--aa-threshold, --aa-depth)\n"
+	"  --aa-threshold T  halve a pixel whose corners differ by more than T (0 to 1,\n"
+	"               default 0.02) in a channel of the sRGB image, or see different\n"
+	"               objects, and its halves by 4 T, 16 T...; lower is smoother and\n"
+	"               slower (implies -a)\n"
+	"  --aa-depth N halve a pixel's side at most N times, 1 to " RT_STRINGIFY(ANTIALIAS_MAX_DEPTH) " (default 2:\n"
+	"               up to 25 rays a pixel; 4: 289) (implies -a)\n"
 	"  -j, --jobs N render with N processes, 1 to " RT_STRINGIFY(PARALLEL_MAX_JOBS) " (default: one per\n"
 	"               processor online); the image is the same for every N\n"
 	"  --ascii      ASCII-art preview (7-bit, no escape sequences)\n"
@@ -72,6 +80,8 @@ typedef struct {
 	int width, height; /* 0: the scene's */
 	int depth;         /* 0: the scene's */
 	int jobs;          /* processes rendering; 0: one per processor */
+	int antialias;     /* -a */
+	antialias aa;      /* its settings */
 	int columns;       /* preview width, 0: the terminal's */
 	int row_first, row_end; /* --rows: [first, end); end 0 for all rows */
 	int spd;
@@ -197,10 +207,32 @@ static int stdout_status(void)
 	return 1;
 }
 
+/* A decimal fraction from 0 to 1 (at most 6 decimals) as sRGB codes, 0 to 255, rounded;
+ * -1 if it is not one. */
+static int parse_fraction_codes(const char *text)
+{
+	long whole = 0, millionths = 0, scale = 100000;
+	const char *p = text;
+	if (*p < '0' || *p > '9') {
+		if (*p != '.')
+			return -1;
+	}
+	while (*p >= '0' && *p <= '9' && whole <= 1)
+		whole = whole * 10 + (*p++ - '0');
+	if (*p == '.')
+		for (p++; *p >= '0' && *p <= '9' && scale > 0; p++, scale /= 10)
+			millionths += (*p - '0') * scale;
+	if (*p != '\0' || p == text || whole > 1 || (whole == 1 && millionths > 0))
+		return -1;
+	return (int)((whole * 1000000 + millionths) * 255 + 500000) / 1000000;
+}
+
 static int parse_options(int argc, char **argv, options *o)
 {
 	int i, status;
 	memset(o, 0, sizeof *o);
+	o->aa.depth = 2;
+	o->aa.threshold = 5; /* 0.02 of 255, rounded */
 	for (i = 1; i < argc; i++) {
 		const char *a = argv[i];
 		const char *value = NULL, *rest;
@@ -210,6 +242,8 @@ static int parse_options(int argc, char **argv, options *o)
 		} else if (strcmp(a, "--version") == 0) {
 			printf("rt %s (real = %s)\n", RT_VERSION, REAL_NAME);
 			return stdout_status();
+		} else if (strcmp(a, "-a") == 0 || strcmp(a, "--antialias") == 0) {
+			o->antialias = 1;
 		} else if (strcmp(a, "--stats") == 0) {
 			o->stats = 1;
 		} else if (strcmp(a, "-q") == 0 || strcmp(a, "--quiet") == 0) {
@@ -229,6 +263,7 @@ static int parse_options(int argc, char **argv, options *o)
 		} else if (strcmp(a, "-o") == 0 || strcmp(a, "-s") == 0 || strcmp(a, "-d") == 0 ||
 			   strcmp(a, "-f") == 0 || strcmp(a, "--format") == 0 ||
 			   strcmp(a, "-j") == 0 || strcmp(a, "--jobs") == 0 ||
+			   strcmp(a, "--aa-threshold") == 0 || strcmp(a, "--aa-depth") == 0 ||
 			   strcmp(a, "--rows") == 0 || strcmp(a, "--cols") == 0 ||
 			   strcmp(a, "--time-limit") == 0) {
 			value = i + 1 < argc ? argv[++i] : NULL;
@@ -275,6 +310,19 @@ static int parse_options(int argc, char **argv, options *o)
 					return usage_error("bad job count '%s' (expected 1 to " RT_STRINGIFY(
 								   PARALLEL_MAX_JOBS) ")",
 							   value);
+			} else if (strcmp(a, "--aa-depth") == 0) {
+				o->antialias = 1;
+				if (!parse_int(value, '\0', 1, ANTIALIAS_MAX_DEPTH, &o->aa.depth, NULL))
+					return usage_error("bad antialiasing depth '%s' (expected 1 to " RT_STRINGIFY(
+								   ANTIALIAS_MAX_DEPTH) ")",
+							   value);
+			} else if (strcmp(a, "--aa-threshold") == 0) {
+				o->antialias = 1;
+				o->aa.threshold = parse_fraction_codes(value);
+				if (o->aa.threshold < 0)
+					return usage_error("bad antialiasing threshold '%s' (expected 0 to 1, "
+							   "e.g. 0.03)",
+							   value);
 			} else if (strcmp(a, "--time-limit") == 0) {
 				o->time_limit = value;
 				o->time_limit_micros = parse_seconds(value);
@@ -319,6 +367,14 @@ static int parse_options(int argc, char **argv, options *o)
 		return usage_error("--spd needs corner sampling, which this build leaves out "
 				   "(RT_CORNER_SAMPLING)%s",
 				   "");
+	if (o->antialias && o->spd)
+		return usage_error("-a and --spd are two ways of sampling; choose one%s", "");
+	if (o->antialias && o->format == FORMAT_IDS)
+		return usage_error("--ids needs one eye ray per pixel, not -a's%s", "");
+	if (o->antialias && !RT_CORNER_SAMPLING)
+		return usage_error("-a needs corner sampling, which this build leaves out "
+				   "(RT_CORNER_SAMPLING)%s",
+				   "");
 	if (o->format == FORMAT_IDS && o->spd)
 		return usage_error("--ids needs one eye ray per pixel, not --spd's corners%s", "");
 	return -1;
@@ -330,13 +386,16 @@ static void print_seconds(const char *name, unsigned long long micros)
 	fprintf(stderr, "%s: %llu.%06llu\n", name, micros / 1000000u, micros % 1000000u);
 }
 
-static void print_stats(const trace_stats *st, unsigned long long parse_micros,
-			unsigned long long micros)
+/* extra_eye_rays: -a's rays beyond the pixels' corners, -1 without -a. */
+static void print_stats(const trace_stats *st, long extra_eye_rays,
+			unsigned long long parse_micros, unsigned long long micros)
 {
 	unsigned long rays = st->eye_rays + st->shadow_rays + st->reflect_rays + st->refract_rays;
 	fprintf(stderr, "objects: %d\n", the_scene.object_count);
 	fprintf(stderr, "eye_rays: %lu\n", st->eye_rays);
 	fprintf(stderr, "eye_hits: %lu\n", st->eye_hits);
+	if (extra_eye_rays >= 0)
+		fprintf(stderr, "antialias_rays: %ld\n", extra_eye_rays);
 	fprintf(stderr, "shadow_rays: %lu\n", st->shadow_rays);
 	fprintf(stderr, "reflect_rays: %lu\n", st->reflect_rays);
 	fprintf(stderr, "refract_rays: %lu\n", st->refract_rays);
@@ -360,7 +419,7 @@ int main(int argc, char **argv)
 	progress_bar bar;
 	sink *target;
 	const char *why;
-	int status = parse_options(argc, argv, &opt), width, height, depth, ok;
+	int status = parse_options(argc, argv, &opt), width, height, rows, depth, ok;
 	unsigned long long start, parsed;
 	const accel *searched; /* the scene and its hierarchy */
 
@@ -443,8 +502,9 @@ int main(int argc, char **argv)
 	/* Ctrl-C, another ending signal or the time limit erases the bar before rt ends. */
 	if (bar.enabled)
 		output_erase_on_end(&bar.drawn);
+	rows = (opt.row_end ? opt.row_end : height) - opt.row_first;
 	ok = render_parallel(&the_tracer, &cam, opt.spd ? SAMPLE_CORNERS : SAMPLE_CENTRE,
-			     opt.row_first, opt.row_end ? opt.row_end : height, target,
+			     opt.antialias ? &opt.aa : NULL, opt.row_first, opt.row_first + rows, target,
 			     opt.jobs ? opt.jobs : parallel_default_jobs(), progress_update, &bar);
 	progress_finish(&bar);
 	if (ok < 0)
@@ -456,6 +516,10 @@ int main(int argc, char **argv)
 	if (!output_close(&out, ok))
 		return 1;
 	if (opt.stats)
-		print_stats(&the_tracer.stats, parsed - start, term_micros() - parsed);
+		print_stats(&the_tracer.stats,
+			    opt.antialias ? (long)the_tracer.stats.eye_rays -
+						    (long)(width + 1) * (rows + 1)
+					  : -1,
+			    parsed - start, term_micros() - parsed);
 	return 0;
 }

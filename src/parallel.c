@@ -2,7 +2,7 @@
  *
  * Worker processes are forked once the scene and its hierarchy are built: they share
  * them copy-on-write, and nothing is built twice. The parent hands out sample lines
- * (render_line's) by number, at most LINES_PER_WORKER to a worker at once, so a worker
+ * (render_line's) by number, at most UNITS_PER_WORKER to a worker at once, so a worker
  * that finishes early takes the next line and none idles while lines are left (a mirror
  * in one corner makes some lines ten times the cost of others). Each worker sends its
  * lines back over its own socket. The parent keeps them in a window of a few lines per
@@ -33,23 +33,39 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "antialias.h"
 #include "diag.h"
 #include "output.h"
 
-/* Lines a worker holds at once: the one it traces and the next, so that it never waits
- * for the parent between lines. */
-#define LINES_PER_WORKER 2
-/* The parent's lines: every worker's, and the two a row of corners is made from. */
-#define WINDOW (PARALLEL_MAX_JOBS * LINES_PER_WORKER + 2)
+/* Units a worker holds at once: the one it works on and the next, so that it never waits
+ * for the parent between them. */
+#define UNITS_PER_WORKER 2
 
-static vec3 window_colours[WINDOW][RT_MAX_WIDTH + 1];
-static int window_ids[WINDOW][RT_MAX_WIDTH + 1];
-static unsigned char window_done[WINDOW];
+/* The parent's window of lines (and, with -a, of rows), a pool of colours: each slot
+ * holds a line of width + 1 colours and ids, and with -a the row refined from it too;
+ * the window has 2 slots per worker and 2 more, so the pool's size (RT_PARALLEL_POOL,
+ * 12 MiB in double) caps -j at the widest images. */
+static vec3 pool[RT_PARALLEL_POOL];
+static int pool_ids[RT_PARALLEL_POOL];
+static int no_ids[RT_MAX_WIDTH]; /* -a's rows: four or more rays a pixel, no one object */
+
+enum unit_kind {
+	UNIT_LINE, /* trace sample line `index` (render_line) */
+	UNIT_ROW   /* -a: refine pixel row `index` from its two corner lines, sent after */
+};
+
+/* A unit of work, as the parent sends it; and, with the worker's counts so far, as the
+ * worker sends back what it made: a line's colours and ids, or a row's colours. */
+typedef struct {
+	int kind;
+	int index;
+	trace_stats stats;
+} work_unit;
 
 typedef struct {
 	pid_t pid;
-	int socket;        /* line numbers out, traced lines in */
-	int in_flight;     /* lines handed out and not yet back */
+	int socket;        /* units out, results in */
+	int in_flight;     /* units handed out and not yet back */
 	trace_stats stats; /* the worker's counts so far */
 } worker;
 
@@ -58,11 +74,16 @@ static int worker_count;
 /* The workers' process IDs, for parallel_stop in a signal handler; 0 where none. */
 static volatile sig_atomic_t worker_pids[PARALLEL_MAX_JOBS];
 
-/* What a worker sends before each line's colours (and, for centres, its ids). */
+/* What a render asks for, shared by the parent and (copied by fork) the workers. */
 typedef struct {
-	int line;
-	trace_stats stats;
-} line_header;
+	tracer *t;
+	const camera *c;
+	enum render_sampling sampling;
+	const antialias *aa;   /* NULL: none */
+	int corners;           /* lines of corners (--spd, -a) */
+	size_t line_length;    /* colours in a line: the width, + 1 for corners */
+	size_t slot_length;    /* colours in a slot */
+} job;
 
 int parallel_default_jobs(void)
 {
@@ -112,28 +133,44 @@ static int send_full(int fd, const void *data, size_t n, int flags)
 	return 1;
 }
 
-/* The worker's life: lines in, colours out, until the parent closes its end. */
-static void work(tracer *t, const camera *c, enum render_sampling sampling, int fd)
+/* The worker's life: units in, results out, until the parent closes its end. */
+static void work(const job *jb, int fd)
 {
-	static vec3 colours[RT_MAX_WIDTH + 1];
-	static int ids[RT_MAX_WIDTH + 1];
-	int corners = RT_CORNER_SAMPLING && sampling == SAMPLE_CORNERS;
-	size_t n = (size_t)(c->width + corners);
-	line_header h;
-	memset(&h, 0, sizeof h); /* its padding too: all of it is sent */
-	memset(&t->stats, 0, sizeof t->stats);
-	while (read_full(fd, &h.line, sizeof h.line)) {
-		render_line(t, c, sampling, h.line, colours, ids);
-		h.stats = t->stats;
-		if (!send_full(fd, &h, sizeof h, 0) || !send_full(fd, colours, n * sizeof *colours, 0) ||
-		    (!corners && !send_full(fd, ids, n * sizeof *ids, 0)))
+	static vec3 colours[2][RT_MAX_WIDTH + 1];
+	static int ids[2][RT_MAX_WIDTH + 1];
+	static vec3 pixels[RT_MAX_WIDTH];
+	size_t n = jb->line_length;
+	work_unit u;
+	memset(&u, 0, sizeof u); /* its padding too: all of it is sent */
+	memset(&jb->t->stats, 0, sizeof jb->t->stats);
+	while (read_full(fd, &u, sizeof u)) {
+		int ok;
+		if (u.kind == UNIT_LINE) {
+			render_line(jb->t, jb->c, jb->sampling, u.index, colours[0], ids[0]);
+		} else {
+			if (!read_full(fd, colours[0], n * sizeof(vec3)) ||
+			    !read_full(fd, ids[0], n * sizeof(int)) ||
+			    !read_full(fd, colours[1], n * sizeof(vec3)) ||
+			    !read_full(fd, ids[1], n * sizeof(int)))
+				_exit(1);
+			antialias_row(jb->t, jb->c, jb->aa, u.index, colours[0], ids[0], colours[1], ids[1],
+				      pixels);
+		}
+		u.stats = jb->t->stats;
+		ok = send_full(fd, &u, sizeof u, 0);
+		if (u.kind == UNIT_LINE)
+			ok = ok && send_full(fd, colours[0], n * sizeof(vec3), 0) &&
+			     send_full(fd, ids[0], n * sizeof(int), 0);
+		else
+			ok = ok && send_full(fd, pixels, (n - 1) * sizeof(vec3), 0);
+		if (!ok)
 			_exit(1);
 	}
 	_exit(0);
 }
 
 /* Forks worker i. 0, with errno, when it cannot. */
-static int start_worker(int i, tracer *t, const camera *c, enum render_sampling sampling)
+static int start_worker(int i, const job *jb)
 {
 	int ends[2], j;
 	pid_t pid;
@@ -155,7 +192,7 @@ static int start_worker(int i, tracer *t, const camera *c, enum render_sampling 
 		for (j = 0; j < i; j++)
 			close(workers[j].socket);
 		close(ends[0]);
-		work(t, c, sampling, ends[1]);
+		work(jb, ends[1]);
 	}
 	close(ends[1]);
 	workers[i].pid = pid;
@@ -199,22 +236,83 @@ static int finish_workers(int stop, int culprit)
 	return fine;
 }
 
-/* Takes one traced line from worker w into the window. 0 when the worker has ended or
- * sent what it was not asked for. */
-static int receive_line(worker *w, int first, int end, int window, int width, int corners)
+/* The window: slot k holds line y0 + k + m window for some m, and with -a the row of the
+ * same number; a flag for each (done, and for rows also handed out). */
+static struct {
+	int first, size; /* the first line's number; slots */
+	unsigned char line_done[PARALLEL_MAX_JOBS * UNITS_PER_WORKER + 2];
+	unsigned char row_sent[PARALLEL_MAX_JOBS * UNITS_PER_WORKER + 2];
+	unsigned char row_done[PARALLEL_MAX_JOBS * UNITS_PER_WORKER + 2];
+} window;
+
+static int slot_of(int index)
 {
-	line_header h;
-	size_t n = (size_t)(width + corners);
+	return (index - window.first) % window.size;
+}
+
+static vec3 *line_colours(const job *jb, int index)
+{
+	return pool + (size_t)slot_of(index) * jb->slot_length;
+}
+
+static int *line_ids(const job *jb, int index)
+{
+	return pool_ids + (size_t)slot_of(index) * jb->slot_length;
+}
+
+/* With -a a slot's row follows its line. */
+static vec3 *row_colours(const job *jb, int index)
+{
+	return line_colours(jb, index) + jb->line_length;
+}
+
+/* Takes one result from worker w into the window. 0 when the worker has ended or sent
+ * what it was not asked for. */
+static int receive(const job *jb, worker *w, int end)
+{
+	work_unit u;
 	int slot;
-	if (!read_full(w->socket, &h, sizeof h) || h.line < first || h.line >= end)
+	if (!read_full(w->socket, &u, sizeof u) || u.index < window.first || u.index >= end)
 		return 0;
-	slot = (h.line - first) % window;
-	if (window_done[slot] || !read_full(w->socket, window_colours[slot], n * sizeof(vec3)) ||
-	    (!corners && !read_full(w->socket, window_ids[slot], n * sizeof(int))))
-		return 0;
-	window_done[slot] = 1;
+	slot = slot_of(u.index);
+	if (u.kind == UNIT_LINE) {
+		if (window.line_done[slot] ||
+		    !read_full(w->socket, line_colours(jb, u.index), jb->line_length * sizeof(vec3)) ||
+		    !read_full(w->socket, line_ids(jb, u.index), jb->line_length * sizeof(int)))
+			return 0;
+		window.line_done[slot] = 1;
+	} else {
+		if (u.kind != UNIT_ROW || !window.row_sent[slot] || window.row_done[slot] ||
+		    !read_full(w->socket, row_colours(jb, u.index),
+			       (jb->line_length - 1) * sizeof(vec3)))
+			return 0;
+		window.row_done[slot] = 1;
+	}
 	w->in_flight--;
-	w->stats = h.stats;
+	w->stats = u.stats;
+	return 1;
+}
+
+/* Sends worker w a unit; a row's two corner lines after it. 0 if the worker has ended. */
+static int hand_out(const job *jb, worker *w, int kind, int index)
+{
+	work_unit u;
+	size_t n = jb->line_length;
+	memset(&u, 0, sizeof u);
+	u.kind = kind;
+	u.index = index;
+	if (!send_full(w->socket, &u, sizeof u, MSG_NOSIGNAL))
+		return 0;
+	if (kind == UNIT_ROW && (!send_full(w->socket, line_colours(jb, index), n * sizeof(vec3),
+					    MSG_NOSIGNAL) ||
+				 !send_full(w->socket, line_ids(jb, index), n * sizeof(int),
+					    MSG_NOSIGNAL) ||
+				 !send_full(w->socket, line_colours(jb, index + 1),
+					    n * sizeof(vec3), MSG_NOSIGNAL) ||
+				 !send_full(w->socket, line_ids(jb, index + 1), n * sizeof(int),
+					    MSG_NOSIGNAL)))
+		return 0;
+	w->in_flight++;
 	return 1;
 }
 
@@ -232,78 +330,115 @@ static void sum_stats(trace_stats *sum)
 	}
 }
 
-int render_parallel(tracer *t, const camera *c, enum render_sampling sampling, int y0, int y1,
-		    sink *out, int jobs, progress_fn progress, void *progress_ctx)
+/* Is row y's result complete in the window? */
+static int row_ready(const job *jb, int y)
 {
-	int corners = RT_CORNER_SAMPLING && sampling == SAMPLE_CORNERS;
-	int end = y1 + corners; /* lines [y0, end) make rows [y0, y1) */
-	int next_line = y0, row = y0, window, i, k;
-	if (jobs > end - y0)
-		jobs = end - y0;
+	if (jb->aa)
+		return window.row_done[slot_of(y)];
+	return window.line_done[slot_of(y)] && (!jb->corners || window.line_done[slot_of(y + 1)]);
+}
+
+int render_parallel(tracer *t, const camera *c, enum render_sampling sampling,
+		    const antialias *aa, int y0, int y1, sink *out, int jobs, progress_fn progress,
+		    void *progress_ctx)
+{
+	job jb;
+	int end, next_line = y0, next_row = y0, row = y0, i, k, fitting;
+	jb.t = t;
+	jb.c = c;
+	jb.sampling = aa ? SAMPLE_CORNERS : sampling;
+	jb.aa = aa;
+	jb.corners = RT_CORNER_SAMPLING && jb.sampling == SAMPLE_CORNERS;
+	jb.line_length = (size_t)(c->width + jb.corners);
+	jb.slot_length = jb.line_length * (aa ? 2 : 1);
+	end = y1 + jb.corners; /* lines [y0, end) make rows [y0, y1) */
+	/* As many workers as there are lines, and as the window holds at this width. */
+	fitting = (int)((RT_PARALLEL_POOL / (long)jb.slot_length - 2) / UNITS_PER_WORKER);
+	jobs = jobs < end - y0 ? jobs : end - y0;
+	jobs = jobs < fitting ? jobs : fitting;
 	if (jobs <= 1)
-		return render_image(t, c, sampling, y0, y1, out, progress, progress_ctx);
+		return aa ? render_adaptive(t, c, aa, y0, y1, out, progress, progress_ctx)
+			  : render_image(t, c, sampling, y0, y1, out, progress, progress_ctx);
 	if (!out->begin(out, c->width, y1 - y0))
 		return 0;
+	for (i = 0; i < c->width; i++)
+		no_ids[i] = -1;
 	output_on_end(parallel_stop);
-	while (worker_count < jobs && start_worker(worker_count, t, c, sampling))
+	while (worker_count < jobs && start_worker(worker_count, &jb))
 		;
 	if (worker_count == 0) {
 		diag_error(NULL, 0, "cannot start a worker process: %s", strerror(errno));
 		output_on_end(NULL);
 		return -1;
 	}
-	window = worker_count * LINES_PER_WORKER + 2;
-	memset(window_done, 0, sizeof window_done);
+	window.first = y0;
+	window.size = worker_count * UNITS_PER_WORKER + 2;
+	memset(window.line_done, 0, sizeof window.line_done);
+	memset(window.row_sent, 0, sizeof window.row_sent);
+	memset(window.row_done, 0, sizeof window.row_done);
 	while (row < y1) {
 		struct pollfd ready[PARALLEL_MAX_JOBS];
-		int waiting[PARALLEL_MAX_JOBS], count = 0;
+		int waiting[PARALLEL_MAX_JOBS], count = 0, culprit = -1;
+		/* With -a, rows whose corner lines are both in go first, each to a worker with
+		 * nothing to do (which is reading, so the lines sent after it cannot fill the
+		 * socket while that worker sends): they let the output move on. */
+		for (i = 0; aa && i < worker_count && next_row < y1; i++)
+			if (workers[i].in_flight == 0 && next_row + 1 < next_line &&
+			    window.line_done[slot_of(next_row)] &&
+			    window.line_done[slot_of(next_row + 1)]) {
+				if (!hand_out(&jb, &workers[i], UNIT_ROW, next_row)) {
+					culprit = i;
+					break;
+				}
+				window.row_sent[slot_of(next_row++)] = 1;
+			}
 		/* Lines to every worker with room, one each in turn, inside the window. */
-		for (k = 1; k <= LINES_PER_WORKER; k++)
-			for (i = 0; i < worker_count && next_line < end && next_line < row + window;
+		for (k = 1; culprit < 0 && k <= UNITS_PER_WORKER; k++)
+			for (i = 0; i < worker_count && next_line < end &&
+				    next_line < row + window.size;
 			     i++) {
 				if (workers[i].in_flight >= k)
 					continue;
-				if (!send_full(workers[i].socket, &next_line, sizeof next_line,
-					       MSG_NOSIGNAL)) {
-					finish_workers(1, i);
-					return -1;
+				if (!hand_out(&jb, &workers[i], UNIT_LINE, next_line)) {
+					culprit = i;
+					break;
 				}
-				workers[i].in_flight++;
 				next_line++;
 			}
-		for (i = 0; i < worker_count; i++)
+		for (i = 0; culprit < 0 && i < worker_count; i++)
 			if (workers[i].in_flight > 0) {
 				ready[count].fd = workers[i].socket;
 				ready[count].events = POLLIN;
 				waiting[count++] = i;
 			}
-		if (poll(ready, (nfds_t)count, -1) < 0) {
+		if (culprit < 0 && poll(ready, (nfds_t)count, -1) < 0) {
 			if (errno == EINTR)
 				continue;
 			diag_error(NULL, 0, "waiting for the workers: %s", strerror(errno));
 			finish_workers(1, -1);
 			return -1;
 		}
-		for (k = 0; k < count; k++)
-			if (ready[k].revents &&
-			    !receive_line(&workers[waiting[k]], y0, end, window, c->width, corners)) {
-				finish_workers(1, waiting[k]);
-				return -1;
-			}
+		for (k = 0; culprit < 0 && k < count; k++)
+			if (ready[k].revents && !receive(&jb, &workers[waiting[k]], end))
+				culprit = waiting[k];
+		if (culprit >= 0) {
+			finish_workers(1, culprit);
+			return -1;
+		}
 		sum_stats(&t->stats);
 		/* The rows now complete leave in order. */
-		while (row < y1 && window_done[(row - y0) % window] &&
-		       (!corners || window_done[(row + 1 - y0) % window])) {
-			int slot = (row - y0) % window;
-			if (corners)
-				render_corner_means(c->width, window_colours[slot],
-						    window_colours[(row + 1 - y0) % window],
-						    window_ids[slot]);
-			if (!out->row(out, window_colours[slot], window_ids[slot])) {
+		while (row < y1 && row_ready(&jb, row)) {
+			vec3 *colours = aa ? row_colours(&jb, row) : line_colours(&jb, row);
+			int *ids = aa ? no_ids : line_ids(&jb, row);
+			if (jb.corners && !aa)
+				render_corner_means(c->width, colours, line_colours(&jb, row + 1), ids);
+			if (!out->row(out, colours, ids)) {
 				finish_workers(1, -1);
 				return 0;
 			}
-			window_done[slot] = 0;
+			window.line_done[slot_of(row)] = 0;
+			window.row_sent[slot_of(row)] = 0;
+			window.row_done[slot_of(row)] = 0;
 			row++;
 			if (progress)
 				progress(progress_ctx, row - y0, y1 - y0);

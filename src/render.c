@@ -21,7 +21,7 @@ void render_line(tracer *t, const camera *c, enum render_sampling sampling, int 
 	for (x = 0; x < c->width + corners; x++) {
 		ray r;
 		camera_next_ray(&line, &r);
-		colours[x] = trace_eye(t, &r, corners ? NULL : &ids[x]);
+		colours[x] = trace_eye(t, &r, &ids[x]);
 	}
 }
 

@@ -16,10 +16,10 @@ enum render_sampling {
 /* Told after each finished row: rows done so far out of the total. */
 typedef void (*progress_fn)(void *ctx, int done, int total);
 
-/* The sample lines: line y of pixel centres (SAMPLE_CENTRE: image row y), with the
- * object each centre's ray hit first in ids; or of pixel corners (SAMPLE_CORNERS: the
- * width + 1 corners on row y's top edge; ids untouched). A line depends on nothing but
- * y, so lines traced in any order, by any process, are the same. */
+/* The sample lines: line y of pixel centres (SAMPLE_CENTRE: image row y) or of pixel
+ * corners (SAMPLE_CORNERS: the width + 1 corners on row y's top edge), with the object
+ * each ray hit first in ids. A line depends on nothing but y, so lines traced in any
+ * order, by any process, are the same. */
 void render_line(tracer *t, const camera *c, enum render_sampling sampling, int y,
 		 vec3 *colours, int *ids);
 

@@ -40,7 +40,7 @@ set -- tests/fuzz/corpus/*
 [ -d tests/good ] && set -- "$@" tests/good/*.nff
 tally fuzz-replay "$(./build/san/replay "$@" 2>&1)"
 tally fuzz-replay-fixed "$(./build/san/replay-fixed "$@" 2>&1)"
-for script in tests/cli.sh tests/golden.sh tests/bad.sh tests/parallel.sh; do
+for script in tests/cli.sh tests/golden.sh tests/bad.sh tests/parallel.sh tests/antialias.sh; do
 	[ -f "$script" ] || continue
 	name=$(basename "$script" .sh)
 	tally "$name" "$(RT=./rt sh "$script" 2>&1)"

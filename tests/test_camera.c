@@ -191,9 +191,82 @@ static void test_too_wide(void)
 	CHECK(camera_init(&c, &v, 16, 16) != NULL); /* degenerate */
 }
 
+/* camera_ray_at, antialiasing's rays between the lines' points: at a point a line reaches
+ * (x, y multiples of 2^shift) the same ray bit for bit, for every shift, on pixel centres
+ * and corners alike; and between them, as the definition in double says, to the lines'
+ * own tolerance. */
+static void rays_at(real angle, int width, int height, double tolerance)
+{
+	view v;
+	camera c;
+	double f[3], r[3], u[3], hw, worst = 0.0;
+	int x, y, shift, corners, same = 1;
+	v.from = VEC_C(1.0, -7.0, 2.5);
+	v.at = VEC_C(0.5, 0.0, 0.75);
+	v.up = VEC_C(0.0, 0.2, 1.0);
+	v.angle = angle;
+	v.hither = REAL_C(0.0);
+	v.width = width;
+	v.height = height;
+	if (!CHECK(camera_init(&c, &v, width, height) == NULL))
+		return;
+	basis(&c, f, r, u);
+	hw = REAL_FIXED ? tan(test_double(angle) * 3.14159265358979323846 / 360.0)
+			: test_double(c.half_width);
+	for (corners = 0; corners < 2; corners++)
+		for (y = 0; y < height + corners; y++) {
+			camera_line line = camera_line_at(&c, 2 * y + !corners, !corners);
+			for (x = 0; x < width + corners; x++) {
+				ray by_line, at;
+				camera_next_ray(&line, &by_line);
+				for (shift = 0; shift <= 4; shift++) {
+					camera_ray_at(&c, (2L * x + !corners) << shift,
+						      (2L * y + !corners) << shift, shift, &at);
+					/* By value: a long double's padding is not compared. */
+					same &= at.dir.x == by_line.dir.x && at.dir.y == by_line.dir.y &&
+						at.dir.z == by_line.dir.z && at.origin.x == by_line.origin.x &&
+						at.origin.y == by_line.origin.y &&
+						at.origin.z == by_line.origin.z;
+				}
+			}
+		}
+	CHECK(same);
+	/* Between: every sixteenth of a half pixel over a few pixels of each corner. */
+	for (y = 0; y < 48; y++)
+		for (x = 0; x < 48; x++) {
+			long px = x + (x < 24 ? 0 : 32L * width - 48);
+			long py = y + (y < 24 ? 0 : 32L * height - 48);
+			double uu = ((double)px / 16.0 - width) / width * hw;
+			double vv = (height - (double)py / 16.0) / width * hw, d[3], len = 0.0;
+			int i;
+			ray at;
+			camera_ray_at(&c, px, py, 4, &at);
+			for (i = 0; i < 3; i++) {
+				d[i] = f[i] + uu * r[i] + vv * u[i];
+				len += d[i] * d[i];
+			}
+			len = sqrt(len);
+			for (i = 0; i < 3; i++) {
+				double got = test_unit_double(i == 0 ? at.dir.x : i == 1 ? at.dir.y : at.dir.z);
+				double e = fabs(got - d[i] / len);
+				worst = e > worst ? e : worst;
+			}
+		}
+	CHECK_NEAR(worst, 0.0, tolerance);
+}
+
+static void test_rays_at(void)
+{
+	const double wide = TOL3(4e-7, 1e-15, 1.0 / 65536.0);
+	rays_at(REAL_C(64.0), 37, 23, wide);
+	rays_at(REAL_C(179.5), 999, 5, wide);
+	rays_at(REAL_C(0.007), 129, 129, TOL3(9.5e-7 / 8.0, 1e-15, 9.5e-7 / 32.0));
+}
+
 void suite_camera(void)
 {
 	test_eye_rays();
+	test_rays_at();
 	test_line_culling();
 	test_too_wide();
 	test_too_narrow();
