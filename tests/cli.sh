@@ -140,13 +140,13 @@ expect_status "--version" 0
 expect_no_stderr "--version"
 if grep -q '^rt [0-9]' "$tmp/out"; then ok; else bad "--version: no 'rt VERSION' on stdout"; fi
 
-# --size: the image size the options give, without rendering.
-run --size scenes/mcu-demo.nff
-expect_status "--size" 0
+# --print-size: the image size the options give, without rendering.
+run --print-size scenes/mcu-demo.nff
+expect_status "--print-size" 0
 if [ "$(cat "$tmp/out")" = "160 100" ]; then ok; else bad "--size: expected '160 100', got '$(cat "$tmp/out")'"; fi
-run -s 33x21 --size scenes/mcu-demo.nff
+run -s 33x21 --print-size scenes/mcu-demo.nff
 if [ "$(cat "$tmp/out")" = "33 21" ]; then ok; else bad "--size -s 33x21: got '$(cat "$tmp/out")'"; fi
-run --ascii --cols 40 --size scenes/mcu-demo.nff
+run --ascii --cols 40 --print-size scenes/mcu-demo.nff
 if [ "$(cat "$tmp/out")" = "40 26" ]; then ok; else bad "--size --ascii --cols 40: got '$(cat "$tmp/out")'"; fi
 
 # usage WHAT ARGS...: exit 2, nothing on stdout, a hint on stderr.
@@ -391,8 +391,8 @@ cd - >/dev/null || exit 1
 # Standard output that cannot be written.
 if [ -w /dev/full ]; then
 	# The short answers too: a help, a version or a size that was not written is a failure.
-	for what in --help --version "--size $tmp/ok.nff"; do
-		# shellcheck disable=SC2086 # "--size FILE" is two words
+	for what in --help --version "--print-size $tmp/ok.nff"; do
+		# shellcheck disable=SC2086 # "--print-size FILE" is two words
 		"$RT" $what >/dev/full 2>"$tmp/err"
 		status=$?
 		expect_status "$what to /dev/full" 1
@@ -739,6 +739,56 @@ for q in -q --quiet; do
 	expect_status "$q with an error" 1
 	expect_err "$q with an error" "58-from-equals-at.nff:2: view:"
 done
+
+# ---- GNU option forms ------------------------------------------------------------------
+# Every form of an option gives the bytes of its plain form.
+run -s 32x24 -d 3 -o "$tmp/forms-plain.ppm" scenes/glass.nff
+for forms in "-s32x24 -d3 -o$tmp/forms.ppm" "--size=32x24 --depth=3 --output=$tmp/forms.ppm" \
+	"--size 32x24 --depth 3 --output $tmp/forms.ppm" "--si 32x24 --dep=3 --out $tmp/forms.ppm" \
+	"-qs 32x24 -d 3 -o $tmp/forms.ppm" "-d 3 -o $tmp/forms.ppm -- scenes/glass.nff -s32x24"; do
+	rm -f "$tmp/forms.ppm"
+	case $forms in
+	*--\ *) set -- ;;
+	*) set -- scenes/glass.nff ;;
+	esac
+	# shellcheck disable=SC2086 # the forms are words
+	run $forms "$@"
+	if [ "$forms" = "-d 3 -o $tmp/forms.ppm -- scenes/glass.nff -s32x24" ]; then
+		# After --, -s32x24 is a second scene: refused.
+		expect_status "-- then an option-like operand" 2
+		expect_err "-- then an option-like operand" "more than one scene given ('-s32x24')"
+		continue
+	fi
+	if [ "$status" -eq 0 ] && cmp -s "$tmp/forms.ppm" "$tmp/forms-plain.ppm"; then ok; else
+		bad "option forms '$forms': status $status, or another image"
+	fi
+done
+# A scene whose name begins with a dash, after --.
+cp scenes/glass.nff "$tmp/-dash.nff"
+(cd "$tmp" && "$RT" -s 32x24 -d 3 -o dash.ppm -- -dash.nff) 2>"$tmp/err"
+if cmp -s "$tmp/dash.ppm" "$tmp/forms-plain.ppm"; then ok; else bad "-- -dash.nff: $(head -n 2 "$tmp/err")"; fi
+run -h
+if [ "$status" -eq 0 ] && grep -q "^Usage: rt" "$tmp/out"; then ok; else bad "-h: status $status, no usage"; fi
+run --he
+if [ "$status" -eq 0 ] && grep -q "^Usage: rt" "$tmp/out"; then ok; else bad "--he: status $status, no usage"; fi
+run --a scenes/glass.nff
+expect_status "--a (ambiguous)" 2
+expect_err "--a (ambiguous)" "option '--a' is ambiguous: --antialias --aa-threshold --aa-depth --ascii --ansi"
+run --stats=yes scenes/glass.nff
+expect_status "--stats=yes" 2
+expect_err "--stats=yes" "option '--stats' takes no value"
+run -qx scenes/glass.nff
+expect_status "-qx" 2
+expect_err "-qx" "unknown option '-x'"
+run scenes/glass.nff -o
+expect_status "-o at the end" 2
+expect_err "-o at the end" "option '-o' needs a value"
+run --output= scenes/glass.nff
+expect_status "--output=" 2
+run --cols=40 --ascii scenes/glass.nff
+if [ "$status" -eq 0 ] && [ "$(head -n 1 "$tmp/out" | wc -c)" -eq 41 ]; then ok; else
+	bad "--cols=40: status $status, first line $(head -n 1 "$tmp/out" | wc -c) bytes"
+fi
 
 # ---- memory --------------------------------------------------------------------------
 # The small-memory build (make build/rt-small) renders, PNG too, in 40 MB of address space,

@@ -16,9 +16,9 @@ else
 	echo "docs.sh: groff not found; the manual page's check is skipped"
 fi
 
-# README's option list is --help's, line for line (from -o FILE to --version).
-"$RT" --help | sed -n '/^  -o FILE/,/^  --version/p' >"$tmp/help"
-sed -n '/^  -o FILE/,/^  --version/p' README.md >"$tmp/readme"
+# README's option list is --help's, line for line (from -o, --output FILE to --version).
+"$RT" --help | sed -n '/^  -o, --output FILE/,/^  --version/p' >"$tmp/help"
+sed -n '/^  -o, --output FILE/,/^  --version/p' README.md >"$tmp/readme"
 if [ -s "$tmp/help" ] && cmp -s "$tmp/help" "$tmp/readme"; then ok; else
 	bad "README's option list differs from --help: $(diff "$tmp/help" "$tmp/readme" | head -n 4)"
 fi

@@ -1,0 +1,147 @@
+/* cmdline.c - GNU getopt_long's option forms (cmdline.h), with no state beyond the
+ * cmdline the caller holds and no library call but string comparison.
+ * See LICENSE for copyright and licence. */
+#include "cmdline.h"
+
+#include <string.h>
+
+void cmdline_start(cmdline *c, int argc, char **argv)
+{
+	memset(c, 0, sizeof *c);
+	c->argc = argc;
+	c->argv = argv;
+	c->next = 1;
+}
+
+/* Keeps the option as written (cut to fit) for messages. */
+static void note_written(cmdline *c, const char *text, size_t length)
+{
+	if (length > sizeof c->written - 1)
+		length = sizeof c->written - 1;
+	memcpy(c->written, text, length);
+	c->written[length] = '\0';
+}
+
+static int fail(cmdline *c, const char *error)
+{
+	c->error = error;
+	return CMDLINE_ERROR;
+}
+
+/* The value of option i: what follows it in its own argument (`attached`, NULL when
+ * nothing does), else the next argument. */
+static int take_value(cmdline *c, const cmdline_option *options, int i, const char *attached)
+{
+	if (!options[i].needs_value) {
+		if (attached)
+			return fail(c, "option '%s' takes no value");
+		return i;
+	}
+	if (attached) {
+		c->value = attached;
+		return i;
+	}
+	if (c->next >= c->argc)
+		return fail(c, "option '%s' needs a value");
+	c->value = c->argv[c->next++];
+	return i;
+}
+
+/* Appends text to c->written, cut to fit. */
+static void append_written(cmdline *c, const char *text)
+{
+	size_t used = strlen(c->written), n = strlen(text);
+	if (n > sizeof c->written - 1 - used)
+		n = sizeof c->written - 1 - used;
+	memcpy(c->written + used, text, n);
+	c->written[used + n] = '\0';
+}
+
+/* A long option, `text` after its --: an exact name, else the one name it begins. */
+static int long_option(cmdline *c, const cmdline_option *options, int count, const char *text)
+{
+	const char *equals = strchr(text, '=');
+	size_t length = equals ? (size_t)(equals - text) : strlen(text);
+	int i, found = -1, matches = 0;
+	note_written(c, text - 2, length + 2);
+	for (i = 0; i < count; i++) {
+		if (!options[i].name || strncmp(options[i].name, text, length) != 0)
+			continue;
+		if (options[i].name[length] == '\0') {
+			found = i;
+			matches = 1;
+			break;
+		}
+		found = i;
+		matches++;
+	}
+	if (matches == 0)
+		return fail(c, "unknown option '%s'");
+	if (matches > 1) {
+		/* '--a' is ambiguous: --antialias, --aa-threshold, --aa-depth */
+		note_written(c, "'", 1);
+		append_written(c, text - 2);
+		c->written[length + 3] = '\0';
+		append_written(c, "' is ambiguous:");
+		for (i = 0; i < count; i++)
+			if (options[i].name && strncmp(options[i].name, text, length) == 0) {
+				append_written(c, " --");
+				append_written(c, options[i].name);
+			}
+		return fail(c, "option %s");
+	}
+	/* Messages about its value name it in full. */
+	note_written(c, "--", 2);
+	append_written(c, options[found].name);
+	return take_value(c, options, found, equals ? equals + 1 : NULL);
+}
+
+/* The next short option of the cluster in c->cluster. */
+static int short_option(cmdline *c, const cmdline_option *options, int count)
+{
+	char letter = *c->cluster++;
+	int i;
+	c->written[0] = '-';
+	c->written[1] = letter;
+	c->written[2] = '\0';
+	for (i = 0; i < count && options[i].letter != letter; i++)
+		;
+	if (i == count) {
+		c->cluster = NULL;
+		return fail(c, "unknown option '%s'");
+	}
+	if (options[i].needs_value) {
+		/* The rest of the cluster is the value, if there is a rest. */
+		const char *attached = *c->cluster ? c->cluster : NULL;
+		c->cluster = NULL;
+		return take_value(c, options, i, attached);
+	}
+	if (*c->cluster == '\0')
+		c->cluster = NULL;
+	return i;
+}
+
+int cmdline_next(cmdline *c, const cmdline_option *options, int count)
+{
+	const char *a;
+	c->value = NULL;
+	c->error = NULL;
+	if (c->cluster)
+		return short_option(c, options, count);
+	if (c->next >= c->argc)
+		return CMDLINE_END;
+	a = c->argv[c->next++];
+	if (c->operands_only || a[0] != '-' || a[1] == '\0') {
+		c->value = a;
+		return CMDLINE_OPERAND;
+	}
+	if (a[1] == '-') {
+		if (a[2] == '\0') {
+			c->operands_only = 1;
+			return cmdline_next(c, options, count);
+		}
+		return long_option(c, options, count, a + 2);
+	}
+	c->cluster = a + 1;
+	return short_option(c, options, count);
+}
