@@ -1,5 +1,6 @@
 /* cmdline.c - GNU getopt_long's option forms (cmdline.h), with no state beyond the
- * cmdline the caller holds and no library call but string comparison.
+ * cmdline the caller holds, and of the C library only what the MCU's has (memcpy,
+ * memset, strlen).
  * See LICENSE for copyright and licence. */
 #include "cmdline.h"
 
@@ -57,34 +58,49 @@ static void append_written(cmdline *c, const char *text)
 	c->written[used + n] = '\0';
 }
 
+/* How a long option as written (`text`, up to its = or its end) matches a name: 2 when
+ * it is the name, 1 when it begins it, 0 when neither. */
+static int name_match(const char *name, const char *text)
+{
+	while (*text != '\0' && *text != '=' && *text == *name) {
+		text++;
+		name++;
+	}
+	if (*text != '\0' && *text != '=')
+		return 0;
+	return *name == '\0' ? 2 : 1;
+}
+
 /* A long option, `text` after its --: an exact name, else the one name it begins. */
 static int long_option(cmdline *c, const cmdline_option *options, int count, const char *text)
 {
-	const char *equals = strchr(text, '=');
-	size_t length = equals ? (size_t)(equals - text) : strlen(text);
+	const char *equals = text;
 	int i, found = -1, matches = 0;
-	note_written(c, text - 2, length + 2);
+	while (*equals != '\0' && *equals != '=')
+		equals++;
+	note_written(c, text - 2, (size_t)(equals - text) + 2);
 	for (i = 0; i < count; i++) {
-		if (!options[i].name || strncmp(options[i].name, text, length) != 0)
-			continue;
-		if (options[i].name[length] == '\0') {
+		int match = options[i].name ? name_match(options[i].name, text) : 0;
+		if (match == 2) {
 			found = i;
 			matches = 1;
 			break;
 		}
-		found = i;
-		matches++;
+		if (match == 1) {
+			found = i;
+			matches++;
+		}
 	}
 	if (matches == 0)
 		return fail(c, "unknown option '%s'");
 	if (matches > 1) {
-		/* '--a' is ambiguous: --antialias, --aa-threshold, --aa-depth */
+		/* '--a' is ambiguous: --antialias --aa-threshold --aa-depth */
 		note_written(c, "'", 1);
 		append_written(c, text - 2);
-		c->written[length + 3] = '\0';
+		c->written[equals - text + 3] = '\0';
 		append_written(c, "' is ambiguous:");
 		for (i = 0; i < count; i++)
-			if (options[i].name && strncmp(options[i].name, text, length) == 0) {
+			if (options[i].name && name_match(options[i].name, text) == 1) {
 				append_written(c, " --");
 				append_written(c, options[i].name);
 			}
@@ -93,7 +109,7 @@ static int long_option(cmdline *c, const cmdline_option *options, int count, con
 	/* Messages about its value name it in full. */
 	note_written(c, "--", 2);
 	append_written(c, options[found].name);
-	return take_value(c, options, found, equals ? equals + 1 : NULL);
+	return take_value(c, options, found, *equals == '=' ? equals + 1 : NULL);
 }
 
 /* The next short option of the cluster in c->cluster. */

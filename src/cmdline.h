@@ -3,7 +3,10 @@
  * in clusters (-qa), with a value attached (-oFILE, -s320x240) or following (-o FILE);
  * long options (--output) with a value after = or following, and abbreviated to any
  * unambiguous prefix (--out); -- ends the options; operands may come anywhere before it,
- * and - is an operand (standard input). See LICENSE for copyright and licence. */
+ * and - is an operand (standard input). It compiles for the MCU too (its C library has
+ * memcpy, memset and strlen, all this uses), but the MCU's main keeps its own loop over
+ * its six options: this parser would cost 808 bytes of the M0's flash, which has 4 to
+ * spare. See LICENSE for copyright and licence. */
 #ifndef RT_CMDLINE_H
 #define RT_CMDLINE_H
 
