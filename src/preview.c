@@ -53,30 +53,76 @@ static int luma(const unsigned char *rgb)
 	return (54 * rgb[0] + 183 * rgb[1] + 19 * rgb[2]) / 256;
 }
 
-/* Nearest colour of xterm's 256-colour palette: the 6x6x6 cube or the 24 greys. */
+/* OKLab (Ottosson 2020: a perceptual space in which distance follows seen difference) of
+ * a linear RGB colour, through its definition's two matrices and a cube root. */
+typedef struct {
+	real l, a, b;
+} oklab;
+
+static oklab oklab_of(real r, real g, real b)
+{
+	real third = REAL_C(0.333333333333333333);
+	real l = real_pow(real_dot3(REAL_C(0.4122214708), REAL_C(0.5363325363), REAL_C(0.0514459929), r,
+				    g, b),
+			  third);
+	real m = real_pow(real_dot3(REAL_C(0.2119034982), REAL_C(0.6806995451), REAL_C(0.1073969566), r,
+				    g, b),
+			  third);
+	real s = real_pow(real_dot3(REAL_C(0.0883024619), REAL_C(0.2817188376), REAL_C(0.6299787005), r,
+				    g, b),
+			  third);
+	oklab out;
+	out.l = real_dot3(REAL_C(0.2104542553), REAL_C(0.7936177850), REAL_C(-0.0040720468), l, m, s);
+	out.a = real_dot3(REAL_C(1.9779984951), REAL_C(-2.4285922050), REAL_C(0.4505937099), l, m, s);
+	out.b = real_dot3(REAL_C(0.0259040371), REAL_C(0.7827717662), REAL_C(-0.8086757660), l, m, s);
+	return out;
+}
+
+/* xterm's 256 colours from 16 on: the 6x6x6 cube, then 24 greys (8, 18, ..., 238). */
+#define PALETTE_COLOURS 240
+
+/* The palette in OKLab, and each sRGB code's linear value, made once. */
+static oklab palette_lab[PALETTE_COLOURS];
+static real code_linear[256];
+static int palette_ready;
+
+static void make_palette(void)
+{
+	static const unsigned char level[6] = {0, 95, 135, 175, 215, 255};
+	int i;
+	for (i = 0; i < 256; i++) {
+		real v = real_div(real_from_int(i), REAL_C(255.0));
+		code_linear[i] = colour_srgb_to_linear(vec_make(v, v, v)).x;
+	}
+	for (i = 0; i < PALETTE_COLOURS; i++) {
+		int r = i < 216 ? level[i / 36] : 8 + 10 * (i - 216);
+		int g = i < 216 ? level[i / 6 % 6] : r, b = i < 216 ? level[i % 6] : r;
+		palette_lab[i] = oklab_of(code_linear[r], code_linear[g], code_linear[b]);
+	}
+	palette_ready = 1;
+}
+
+/* The palette colour nearest to an sRGB colour in OKLab: the one a viewer takes for it.
+ * (Nearest in RGB made the violet sky grey and orange glass olive: RGB distance weighs
+ * a step in blue as much as one in green, and hue not at all.) */
 static int palette_index(const unsigned char *rgb)
 {
-	static const int level[6] = {0, 95, 135, 175, 215, 255};
-	int cube[3], i, best_grey, grey_value, cube_distance = 0, grey_distance = 0;
-	for (i = 0; i < 3; i++) {
-		int c = 0;
-		while (c < 5 && rgb[i] > (level[c] + level[c + 1]) / 2)
-			c++;
-		cube[i] = c;
-		cube_distance += (rgb[i] - level[c]) * (rgb[i] - level[c]);
+	oklab want;
+	int i, best = 0;
+	real best_distance = REAL_MAX;
+	if (!palette_ready)
+		make_palette();
+	want = oklab_of(code_linear[rgb[0]], code_linear[rgb[1]], code_linear[rgb[2]]);
+	for (i = 0; i < PALETTE_COLOURS; i++) {
+		real dl = palette_lab[i].l - want.l, da = palette_lab[i].a - want.a,
+		     db = palette_lab[i].b - want.b;
+		real distance = real_dot3(dl, da, db, dl, da, db);
+		if (distance < best_distance) {
+			best_distance = distance;
+			best = i;
+		}
 	}
-	/* Greys 232..255 are 8, 18, ..., 238. */
-	/* (luma - 3) / 10 by a multiply: exact for 0..252 (the error stays below 0.025),
-	 * and small cores have no divide. */
-	best_grey = luma(rgb) - 3;
-	best_grey = best_grey < 0 ? 0 : (best_grey * 205) >> 11;
-	best_grey = best_grey > 23 ? 23 : best_grey;
-	grey_value = 8 + 10 * best_grey;
-	for (i = 0; i < 3; i++)
-		grey_distance += (rgb[i] - grey_value) * (rgb[i] - grey_value);
-	if (grey_distance < cube_distance)
-		return 232 + best_grey;
-	return 16 + 36 * cube[0] + 6 * cube[1] + cube[2];
+	return 16 + best;
 }
 
 /* Appends the escape that sets the foreground (layer 38) or background (48) colour. */

@@ -534,6 +534,17 @@ COLORTERM= NO_COLOR= run --ansi --cols 30 scenes/mirror-spheres.nff
 if grep -q "${esc}\[38;5;" "$tmp/out" && ! grep -q "${esc}\[38;2;" "$tmp/out"; then ok; else
 	bad "--ansi without COLORTERM: expected 256 colours only"
 fi
+# The 256-colour palette entry is the nearest in OKLab (a perceptual space), not in RGB:
+# this green (52, 157, 69) is (0, 175, 95), index 35; RGB distance chose (95, 175, 95), a
+# paler green. An exact palette colour (135, 95, 0), index 94, stays itself.
+for case in "0.20392 0.61569 0.27059:35" "0.52941 0.37255 0:94"; do
+	printf 'b %s\nv\nfrom 0 0 -5\nat 0 0 0\nup 0 1 0\nangle 40\nhither 0.01\nresolution 8 6\n' \
+		"${case%%:*}" >"$tmp/flat.nff"
+	COLORTERM= NO_COLOR= run --ansi --cols 4 "$tmp/flat.nff"
+	if grep -q "${esc}\[38;5;${case#*:}m${esc}\[48;5;${case#*:}m" "$tmp/out"; then ok; else
+		bad "256 colours: background ${case%%:*} is not palette colour ${case#*:}"
+	fi
+done
 # A colour asked for on the command line wins over NO_COLOR and TERM (no-color.org); the
 # preview rt chooses for a terminal itself honours both (below, under `script`).
 NO_COLOR=1 COLORTERM=truecolor run --ansi --cols 30 scenes/mirror-spheres.nff
