@@ -31,7 +31,7 @@ CPPCHECK ?= cppcheck
 CLANG_TIDY ?= clang-tidy
 # cppcheck checks the floating-point configurations, then Q16.16 fixed point on its own.
 CPPCHECK_FLAGS = --enable=warning,style,performance,portability --std=c99 --error-exitcode=1 \
-	--inline-suppr --suppressions-list=tests/lint/cppcheck.supp --config-exclude=src/vendor \
+	--inline-suppr --suppressions-list=tests/lint/cppcheck.supp \
 	--quiet -Isrc
 lint:
 	@sh tools/need $(CPPCHECK) cppcheck

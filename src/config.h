@@ -47,9 +47,6 @@
 #ifndef RT_MAX_MEDIA
 #define RT_MAX_MEDIA 8 /* nested transmitting objects a ray can be inside at once */
 #endif
-#ifndef RT_PNG_ARENA_BYTES
-#define RT_PNG_ARENA_BYTES (96L << 20) /* PNG encoder memory, bytes: 2048 x 2048 at most */
-#endif
 #ifndef RT_PARALLEL_POOL
 /* -j's window, in colours (and as many ids): two lines a worker, and two more, of the
  * image's width; 2^19 holds 64 workers to 4,000 pixels wide, and fewer beyond. */

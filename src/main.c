@@ -7,6 +7,7 @@
 
 #include "camera.h"
 #include "diag.h"
+#include "image.h"
 #include "load.h"
 #include "options.h"
 #include "output.h"
@@ -103,17 +104,6 @@ int main(int argc, char **argv)
 		diag_error(NULL, 0, "--rows %d:%d is outside the image's %d rows", opt.row_first,
 			   opt.row_end, height);
 		return 2;
-	}
-	if (opt.format == FORMAT_PNG && !png_available()) {
-		diag_error(opt.output_path, 0, "this build (%s) writes no PNG; write .ppm", REAL_NAME);
-		return 1;
-	}
-	if (opt.format == FORMAT_PNG && !png_fits(width, height)) {
-		diag_error(opt.output_path, 0,
-			   "%dx%d is too large for PNG output in this build (the encoder's fixed "
-			   "memory, RT_PNG_ARENA_BYTES in src/config.h, is %ld MiB); write .ppm",
-			   width, height, (long)(RT_PNG_ARENA_BYTES >> 20));
-		return 1;
 	}
 	why = camera_init(&cam, &the_scene.camera, width, height);
 	if (why) {

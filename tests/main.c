@@ -93,7 +93,7 @@ int main(int argc, char **argv)
 	} suites[] = {
 		{"sphere", suite_sphere},         {"hedron", suite_hedron}, {"polygon", suite_polygon},
 		{"cone", suite_cone},             {"optics", suite_optics}, {"properties", suite_properties},
-		{"parse", suite_parse},           {"image", suite_image},   {"output", suite_output},
+		{"parse", suite_parse},           {"image", suite_image},   {"output", suite_output}, {"deflate", suite_deflate},
 		{"fixed", suite_fixed},           {"camera", suite_camera}, {"bvh", suite_bvh},
 		{"clearance", suite_clearance},
 	};

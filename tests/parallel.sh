@@ -52,12 +52,7 @@ COLORTERM=truecolor same_at_every_j "--ansi, 24-bit" --ansi --cols 50 scenes/gla
 same_at_every_j "--stats counts" --stats -s 64x48 scenes/showpiece.nff
 same_at_every_j "more workers than rows" -s 9x2 scenes/showpiece.nff
 same_at_every_j "depth 1" -d 1 -s 40x30 scenes/showpiece.nff
-run -j 1 -s 8x8 -o "$tmp/probe.png" scenes/showpiece.nff
-if [ "$status" -eq 0 ]; then
-	same_at_every_j "PNG" -s 64x48 -o - -f png scenes/showpiece.nff
-else
-	echo "parallel.sh: this build writes no PNG; its check is skipped"
-fi
+same_at_every_j "PNG" -s 64x48 -o - -f png scenes/showpiece.nff
 
 # The counts --stats prints are the workers' summed: at -j 2 the eye rays are the image's.
 run -j 2 --stats -s 40x30 scenes/showpiece.nff

@@ -175,6 +175,7 @@ void suite_properties(void);
 void suite_parse(void);
 void suite_image(void);
 void suite_output(void);
+void suite_deflate(void);
 void suite_camera(void);
 void suite_bvh(void);
 void suite_clearance(void);

@@ -1,8 +1,7 @@
-/* test_output.c - the output sinks: ASCII and ANSI previews and the PNG encoder's arena.
+/* test_output.c - the output sinks: ASCII and ANSI previews.
  * See LICENSE for copyright and licence. */
 #include <string.h>
 
-#include "png.h"
 #include "preview.h"
 #include "test.h"
 
@@ -105,60 +104,10 @@ static void test_preview_size(void)
 	CHECK_INT(h, 2);
 }
 
-#if !REAL_FIXED
-static int discard(void *ctx, const void *data, size_t n)
-{
-	(void)ctx;
-	(void)data;
-	(void)n;
-	return 1;
-}
-
-static void test_png_arena(void)
-{
-	static unsigned char rgb[32 * 24 * 3], arena[10 << 20];
-	size_t i;
-	for (i = 0; i < sizeof rgb; i++)
-		rgb[i] = (unsigned char)(i * 7919 % 251);
-	/* Enough memory: a PNG signature comes out. */
-	captured_length = 0;
-	CHECK_INT(png_write(rgb, 32, 24, capture, NULL, arena, sizeof arena), 1);
-	CHECK(captured_length > 8 && memcmp(captured, "\x89PNG\r\n\x1a\n", 8) == 0);
-	CHECK(png_arena_needed(32, 24) <= sizeof arena);
-	/* Too little memory: a clean failure (0), whatever the encoder was doing, and the
-	 * same arena still works afterwards. */
-	CHECK_INT(png_write(rgb, 32, 24, capture, NULL, arena, 4096), 0);
-	CHECK_INT(png_write(rgb, 32, 24, capture, NULL, arena, 100), 0);
-	captured_length = 0;
-	CHECK_INT(png_write(rgb, 32, 24, capture, NULL, arena, sizeof arena), 1);
-	CHECK(png_arena_peak() <= png_arena_needed(32, 24));
-	/* The bound holds for incompressible pixels, the encoder's worst case. */
-	{
-		static unsigned char noise[160 * 120 * 3];
-		test_seed(1);
-		for (i = 0; i < sizeof noise; i++)
-			noise[i] = (unsigned char)(test_random_bits() >> 24);
-		captured_length = 0;
-		CHECK_INT(png_write(noise, 160, 120, discard, NULL, arena, sizeof arena), 1);
-		CHECK(png_arena_peak() <= png_arena_needed(160, 120));
-	}
-	/* The static arena takes 2048 x 2048, not 8192 x 8192. */
-	CHECK(png_fits(2048, 2048));
-	CHECK(!png_fits(8192, 8192));
-}
-#else
-/* stb_image_write has floating-point code: the Q16.16 build, which has none at all, goes
- * without PNG, and says so. */
-static void test_png_arena(void)
-{
-	CHECK(!png_available());
-}
-#endif
 
 void suite_output(void)
 {
 	test_ascii();
 	test_ansi();
 	test_preview_size();
-	test_png_arena();
 }
