@@ -30,9 +30,9 @@ static sample make_sample(vec3 colour, int id)
 	sample s;
 	s.colour = colour;
 	s.id = id;
-	s.code[0] = colour_srgb_byte(colour.x);
-	s.code[1] = colour_srgb_byte(colour.y);
-	s.code[2] = colour_srgb_byte(colour.z);
+	s.code[0] = colour_byte(colour.x);
+	s.code[1] = colour_byte(colour.y);
+	s.code[2] = colour_byte(colour.z);
 	return s;
 }
 

@@ -1,9 +1,13 @@
-/* colour.c - sRGB, both ways.
+/* colour.c - the colour pipeline (colour.h), both ways.
  * Colours are linear while tracing; each channel is clamped to [0, 1] and encoded with
  * the sRGB transfer curve, the usual meaning of PPM samples in practice. Scene colours
  * come in as sRGB and are decoded once at load, so `b 0.5 0.5 0.5` shows as 50% grey.
+ * The classic pipeline has no curve either way: one table (the codes' thresholds) serves
+ * both, made from whichever curve is chosen.
  * See LICENSE for copyright and licence. */
 #include "colour.h"
+
+#include "config.h"
 
 /* sRGB's transfer curve, linear light from an encoded value in [0, 1]. */
 static real decode_channel(real v)
@@ -20,6 +24,30 @@ static real decode_channel(real v)
 vec3 colour_srgb_to_linear(vec3 srgb)
 {
 	return vec_make(decode_channel(srgb.x), decode_channel(srgb.y), decode_channel(srgb.z));
+}
+
+static enum colour_pipeline pipeline;
+static int chosen_on_command_line;
+
+void colour_choose(enum colour_pipeline p, int from_scene)
+{
+	if (from_scene && chosen_on_command_line)
+		return;
+	pipeline = p;
+	chosen_on_command_line = !from_scene;
+}
+
+/* The chosen curve: sRGB's, or none. */
+static real scene_channel(real v)
+{
+	if (RT_COLOUR_PIPELINES && pipeline == COLOUR_CLASSIC)
+		return v;
+	return decode_channel(v);
+}
+
+vec3 colour_scene_to_linear(vec3 colour)
+{
+	return vec_make(scene_channel(colour.x), scene_channel(colour.y), scene_channel(colour.z));
 }
 
 /* Linear value at which each 8-bit code starts: decode((code - 0.5) / 255), computed once
@@ -39,7 +67,7 @@ static void init_thresholds(void)
 	srgb_thresholds[0] = REAL_C(0.0);
 	for (code = 1; code < 256; code++)
 		srgb_thresholds[code] =
-			decode_channel(real_div(real_from_int(code) - REAL_C(0.5), REAL_C(255.0)));
+			scene_channel(real_div(real_from_int(code) - REAL_C(0.5), REAL_C(255.0)));
 	for (j = 0, code = 0; j < SRGB_STEPS; j++) {
 		while (code < 255 && srgb_thresholds[code + 1] * SRGB_STEPS <= real_from_int(j))
 			code++;
@@ -48,7 +76,7 @@ static void init_thresholds(void)
 	thresholds_ready = 1;
 }
 
-unsigned char colour_srgb_byte(real linear)
+unsigned char colour_byte(real linear)
 {
 	int code;
 	if (!thresholds_ready)
@@ -71,8 +99,8 @@ void colour_encode_row(const vec3 *colors, int count, unsigned char *bytes)
 {
 	int i;
 	for (i = 0; i < count; i++) {
-		bytes[3 * i + 0] = colour_srgb_byte(colors[i].x);
-		bytes[3 * i + 1] = colour_srgb_byte(colors[i].y);
-		bytes[3 * i + 2] = colour_srgb_byte(colors[i].z);
+		bytes[3 * i + 0] = colour_byte(colors[i].x);
+		bytes[3 * i + 1] = colour_byte(colors[i].y);
+		bytes[3 * i + 2] = colour_byte(colors[i].z);
 	}
 }

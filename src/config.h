@@ -70,6 +70,12 @@
 #endif
 #define RT_PATCH_VERTICES (RT_SHAPE_PATCH ? RT_MAX_VERTICES : 1) /* the patch pools' size */
 
+/* The classic colour pipeline (`colours classic`, --colours); 0 leaves it out where flash
+ * is short (the command is then refused). */
+#ifndef RT_COLOUR_PIPELINES
+#define RT_COLOUR_PIPELINES 1
+#endif
+
 /* The ANSI colour previews; 0 leaves them out (ASCII only) where flash is short. */
 #ifndef RT_PREVIEW_COLOR
 #define RT_PREVIEW_COLOR 1

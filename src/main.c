@@ -79,6 +79,8 @@ int main(int argc, char **argv)
 	if (opt.time_limit &&
 	    !output_time_limit(opt.scene_name, opt.time_limit_micros, opt.time_limit))
 		return 1;
+	if (opt.colours >= 0)
+		colour_choose((enum colour_pipeline)opt.colours, 0);
 	start = term_micros();
 	if (!load_scene_file(&the_scene, opt.scene_path))
 		return 1;

@@ -53,6 +53,9 @@ static const char usage_text[] =
 	"               else 256 colours), whatever NO_COLOR and TERM say\n"
 	"  --cols N     preview width in characters (default: the terminal's, else 80;\n"
 	"               no taller than the terminal, less a line for the prompt)\n"
+	"  --colours PIPELINE  srgb (the default: scene colours are sRGB, lit in linear\n"
+	"               light, written as sRGB) or classic (NFF's values as they are, no\n"
+	"               curve either way); overrides the scene's own `colours` command\n"
 	"  --ids        instead of colours, write a 16-bit PGM of the object each pixel's\n"
 	"               eye ray hits first (1 + its index in the scene; 0 for none)\n"
 	"  --rows Y0:Y1 render only rows Y0 to Y1-1, as a PPM of that band (for splitting\n"
@@ -229,14 +232,15 @@ static int check_combinations(options *o)
 enum option_id {
 	OPT_OUTPUT, OPT_FORMAT, OPT_SIZE, OPT_DEPTH, OPT_ANTIALIAS, OPT_AA_THRESHOLD, OPT_AA_DEPTH,
 	OPT_JOBS, OPT_ASCII, OPT_ANSI, OPT_COLS, OPT_IDS, OPT_ROWS, OPT_SPD, OPT_STATS, OPT_QUIET,
-	OPT_TIME_LIMIT, OPT_PRINT_SIZE, OPT_HELP, OPT_VERSION, OPTION_COUNT
+	OPT_TIME_LIMIT, OPT_PRINT_SIZE, OPT_HELP, OPT_VERSION, OPT_COLOURS, OPTION_COUNT
 };
 static const cmdline_option option_table[OPTION_COUNT] = {
 	{"output", 'o', 1},      {"format", 'f', 1},   {"size", 's', 1},      {"depth", 'd', 1},
 	{"antialias", 'a', 0},   {"aa-threshold", 0, 1}, {"aa-depth", 0, 1},  {"jobs", 'j', 1},
 	{"ascii", 0, 0},         {"ansi", 0, 0},       {"cols", 0, 1},        {"ids", 0, 0},
 	{"rows", 0, 1},          {"spd", 0, 0},        {"stats", 0, 0},       {"quiet", 'q', 0},
-	{"time-limit", 0, 1},    {"print-size", 0, 0}, {"help", 'h', 0},      {"version", 0, 0}};
+	{"time-limit", 0, 1},    {"print-size", 0, 0}, {"help", 'h', 0},      {"version", 0, 0},
+	{"colours", 0, 1}};
 
 /* One option and its value into o. Returns -1 to go on, else the exit status. */
 static int take_option(options *o, enum option_id id, const char *value, const char *written)
@@ -319,6 +323,11 @@ static int take_option(options *o, enum option_id id, const char *value, const c
 			return usage_error("bad antialiasing threshold '%s' (expected 0 to 1, e.g. 0.02)",
 					   value);
 		return -1;
+	case OPT_COLOURS:
+		if (strcmp(value, "srgb") != 0 && strcmp(value, "classic") != 0)
+			return usage_error("bad colour pipeline '%s' (expected srgb or classic)", value);
+		o->colours = strcmp(value, "classic") == 0 ? COLOUR_CLASSIC : COLOUR_SRGB;
+		return -1;
 	case OPT_TIME_LIMIT:
 		o->time_limit = value;
 		o->time_limit_micros = parse_seconds(value);
@@ -348,6 +357,7 @@ int options_parse(int argc, char **argv, options *o)
 	cmdline c;
 	int id, status;
 	memset(o, 0, sizeof *o);
+	o->colours = -1;
 	o->aa.depth = 2;
 	o->aa.threshold = 5; /* 0.02 of 255, rounded */
 	cmdline_start(&c, argc, argv);

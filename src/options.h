@@ -4,6 +4,7 @@
 #define RT_OPTIONS_H
 
 #include "antialias.h"
+#include "colour.h"
 
 enum format { FORMAT_DEFAULT, FORMAT_PPM, FORMAT_PNG, FORMAT_ASCII, FORMAT_ANSI, FORMAT_IDS };
 
@@ -18,6 +19,7 @@ typedef struct {
 	int jobs;          /* processes rendering; 0: one per processor */
 	int antialias;     /* -a */
 	antialias aa;      /* its settings */
+	int colours;       /* --colours: an enum colour_pipeline, -1 for the scene's */
 	int columns;       /* preview width, 0: the terminal's */
 	int row_first, row_end; /* --rows: [first, end); end 0 for all rows */
 	int spd;

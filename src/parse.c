@@ -226,7 +226,9 @@ static int parse_material(parser *p)
 	/* ior means nothing for opaque materials (SPD writes 0 or 1): store 1 so they share. */
 	if (m.kt <= REAL_C(0.0))
 		m.ior = REAL_C(1.0);
-	m.color = colour_srgb_to_linear(m.color);
+	m.color = colour_scene_to_linear(m.color);
+	if (RT_COLOUR_PIPELINES && !p->coloured)
+		p->coloured = line;
 	m.absorb = p->absorb;
 	p->absorb = vec_make(REAL_C(0.0), REAL_C(0.0), REAL_C(0.0));
 	index = intern_material(p, &m, line);
@@ -300,6 +302,25 @@ enum command {
 };
 
 
+/* `colours srgb` or `colours classic`: the colour pipeline (colour.h), before the first
+ * colour it changes (b, f). */
+static int parse_colours(parser *p)
+{
+	int line = p->lx.tok_line, which;
+	if (!lexer_next(&p->lx))
+		return lexer_fail(&p->lx, line, "colours: expected srgb or classic");
+	which = lexer_keyword("srgb\0classic\0", p->lx.tok);
+	if (which > 1)
+		return lexer_fail(&p->lx, p->lx.tok_line, "colours: expected srgb or classic, got '%s'",
+				  p->lx.tok);
+	if (p->coloured)
+		return lexer_fail(&p->lx, line, "colours: must come before the first colour "
+						"(line %d has one)",
+				  p->coloured);
+	colour_choose(which ? COLOUR_CLASSIC : COLOUR_SRGB, 1);
+	return 1;
+}
+
 static int parse_entity(parser *p)
 {
 	const char *cmd = p->lx.tok;
@@ -310,7 +331,9 @@ static int parse_entity(parser *p)
 	case CMD_BACKGROUND:
 		if (!lexer_read_triple(&p->lx, "background colour", 0, &p->s->background))
 			return 0;
-		p->s->background = colour_srgb_to_linear(p->s->background);
+		p->s->background = colour_scene_to_linear(p->s->background);
+		if (RT_COLOUR_PIPELINES && !p->coloured)
+			p->coloured = p->lx.tok_line;
 		return 1;
 	case CMD_LIGHT:
 		return parse_light(p);
@@ -350,6 +373,10 @@ static int parse_entity(parser *p)
 	default:
 		break;
 	}
+	/* Not in the table: where the build leaves the pipelines out (the MCU), the command
+	 * costs nothing, not even its name. */
+	if (RT_COLOUR_PIPELINES && strcmp(cmd, "colours") == 0)
+		return parse_colours(p);
 	/* In a token stream an extra number is read as a command: say so. */
 	if (lexer_is_number(cmd))
 		return lexer_fail(&p->lx, p->lx.tok_line,

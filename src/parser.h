@@ -15,6 +15,7 @@ typedef struct {
 	vec3 absorb;      /* absorption for the next `f` */
 	int view_line;    /* line of `v`, 0 if none yet */
 	int unlit_lights; /* lights given without a colour */
+	int coloured;     /* line of the first colour (b, f) the pipeline decodes; 0: none */
 	int light_has_color[RT_MAX_LIGHTS];
 } parser;
 

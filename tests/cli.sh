@@ -757,6 +757,37 @@ for q in -q --quiet; do
 	expect_err "$q with an error" "58-from-equals-at.nff:2: view:"
 done
 
+# ---- the colour pipeline -----------------------------------------------------------------
+# A grey sphere (0.5, Kd 0.5) lit head-on: classic takes 0.5 as it is and writes 0.25 as 64
+# (of 255); sRGB decodes 0.5 to 0.214, lights it to 0.107 and writes that as 92.
+printf 'v\nfrom 0 0 -10\nat 0 0 0\nup 0 1 0\nangle 10\nhither 0.01\nresolution 9 9\nl 0 0 -10\nf 0.5 0.5 0.5 0.5 0 0 0 1\ns 0 0 0 1\n' \
+	>"$tmp/lit.nff"
+# centre_red FILE: the red sample of the middle pixel of a 9x9 PPM.
+centre_red() { tail -c +16 "$1" | od -An -tu1 -j 120 -N 1 | tr -d ' '; }
+run -o "$tmp/lit-srgb.ppm" "$tmp/lit.nff"
+run --colours classic -o "$tmp/lit-classic.ppm" "$tmp/lit.nff"
+if [ "$(centre_red "$tmp/lit-srgb.ppm")" -ge 88 ] && [ "$(centre_red "$tmp/lit-srgb.ppm")" -le 94 ] &&
+	[ "$(centre_red "$tmp/lit-classic.ppm")" -ge 60 ] && [ "$(centre_red "$tmp/lit-classic.ppm")" -le 66 ]; then ok; else
+	bad "colour pipelines: centre red $(centre_red "$tmp/lit-srgb.ppm") (sRGB, expected 88-94), $(centre_red "$tmp/lit-classic.ppm") (classic, expected 60-66)"
+fi
+# The scene command does the same; the command line wins over it.
+{ echo "colours classic"; cat "$tmp/lit.nff"; } >"$tmp/lit-c.nff"
+run -o "$tmp/lit-c.ppm" "$tmp/lit-c.nff"
+if cmp -s "$tmp/lit-c.ppm" "$tmp/lit-classic.ppm"; then ok; else bad "'colours classic' differs from --colours classic"; fi
+run --colours srgb -o "$tmp/lit-c.ppm" "$tmp/lit-c.nff"
+if cmp -s "$tmp/lit-c.ppm" "$tmp/lit-srgb.ppm"; then ok; else bad "--colours srgb does not win over the scene's command"; fi
+# After a colour it would change, the command is an error; so is an unknown pipeline.
+{ cat "$tmp/lit.nff"; echo "colours classic"; } >"$tmp/lit-late.nff"
+run "$tmp/lit-late.nff"
+expect_status "colours after f" 1
+expect_err "colours after f" "lit-late.nff:11: colours: must come before the first colour (line 9 has one)"
+printf 'colours grey\n' >"$tmp/grey.nff"
+run "$tmp/grey.nff"
+expect_status "colours grey" 1
+expect_err "colours grey" "grey.nff:1: colours: expected srgb or classic, got 'grey'"
+run --colours grey "$tmp/lit.nff"
+expect_status "--colours grey" 2
+
 # ---- GNU option forms ------------------------------------------------------------------
 # Every form of an option gives the bytes of its plain form.
 run -s 32x24 -d 3 -o "$tmp/forms-plain.ppm" scenes/glass.nff

@@ -15,25 +15,25 @@ static double srgb_encode(double linear)
 
 static void test_byte_ends(void)
 {
-	CHECK_INT(colour_srgb_byte(REAL_C(0.0)), 0);
-	CHECK_INT(colour_srgb_byte(REAL_C(1.0)), 255);
-	CHECK_INT(colour_srgb_byte(-REAL_C(0.0)), 0);
+	CHECK_INT(colour_byte(REAL_C(0.0)), 0);
+	CHECK_INT(colour_byte(REAL_C(1.0)), 255);
+	CHECK_INT(colour_byte(-REAL_C(0.0)), 0);
 	/* Out of range clamps; NaN must not become a bright pixel (Q16.16 has none). */
 #if !REAL_FIXED
-	CHECK_INT(colour_srgb_byte((real)NAN), 0);
-	CHECK_INT(colour_srgb_byte(-(real)NAN), 0);
+	CHECK_INT(colour_byte((real)NAN), 0);
+	CHECK_INT(colour_byte(-(real)NAN), 0);
 #endif
-	CHECK_INT(colour_srgb_byte(REAL_C(-0.5)), 0);
-	CHECK_INT(colour_srgb_byte(-REAL_MAX), 0);
-	CHECK_INT(colour_srgb_byte(REAL_C(1.5)), 255);
-	CHECK_INT(colour_srgb_byte(REAL_MAX), 255);
+	CHECK_INT(colour_byte(REAL_C(-0.5)), 0);
+	CHECK_INT(colour_byte(-REAL_MAX), 0);
+	CHECK_INT(colour_byte(REAL_C(1.5)), 255);
+	CHECK_INT(colour_byte(REAL_MAX), 255);
 #if !REAL_FIXED
-	CHECK_INT(colour_srgb_byte((real)INFINITY), 255);
-	CHECK_INT(colour_srgb_byte(-(real)INFINITY), 0);
+	CHECK_INT(colour_byte((real)INFINITY), 255);
+	CHECK_INT(colour_byte(-(real)INFINITY), 0);
 #endif
 	/* Below half a code: still black. */
-	CHECK_INT(colour_srgb_byte(REAL_C(1e-30)), 0);
-	CHECK_INT(colour_srgb_byte(REAL_C(0.0001)), 0);
+	CHECK_INT(colour_byte(REAL_C(1e-30)), 0);
+	CHECK_INT(colour_byte(REAL_C(0.0001)), 0);
 }
 
 static void test_byte_formula(void)
@@ -51,12 +51,12 @@ static void test_byte_formula(void)
 	size_t i;
 	int bad = 0, checked = 0, n;
 	for (i = 0; i < sizeof table / sizeof table[0]; i++) {
-		CHECK_INT(colour_srgb_byte(test_real(table[i].linear)), table[i].code);
+		CHECK_INT(colour_byte(test_real(table[i].linear)), table[i].code);
 		/* The table itself agrees with the reference. */
 		CHECK_INT((int)floor(255 * srgb_encode(table[i].linear) + 0.5), table[i].code);
 	}
 	/* 0.214 is about 50% grey: 127.49 codes. */
-	CHECK(colour_srgb_byte(REAL_C(0.214)) >= 127 && colour_srgb_byte(REAL_C(0.214)) <= 128);
+	CHECK(colour_byte(REAL_C(0.214)) >= 127 && colour_byte(REAL_C(0.214)) <= 128);
 
 	/* A dense sweep (quadratic, so the steep dark end is sampled finely): every point
 	 * not within 1e-4 code of a boundary rounds exactly as the formula does. Q16.16:
@@ -69,10 +69,10 @@ static void test_byte_formula(void)
 		if (fabs(v - floor(v) - 0.5) < TOL3(1e-4, 1e-4, 0.06))
 			continue;
 		checked++;
-		if (colour_srgb_byte(test_real(x)) != (int)floor(v + 0.5) && bad++ == 0)
-			printf("%s:%d: colour_srgb_byte(%.17g): expected %d (the formula), got %d\n",
+		if (colour_byte(test_real(x)) != (int)floor(v + 0.5) && bad++ == 0)
+			printf("%s:%d: colour_byte(%.17g): expected %d (the formula), got %d\n",
 			       __FILE__, __LINE__, x, (int)floor(v + 0.5),
-			       colour_srgb_byte(test_real(x)));
+			       colour_byte(test_real(x)));
 	}
 	CHECK_INT(bad, 0);
 	/* Q16.16 skips 12 % of the points (0.12 of each code). */
@@ -86,9 +86,9 @@ static void test_byte_monotonic(void)
 	/* Non-decreasing from below 0 to above 1, and every code is reached. */
 	for (n = -100; n <= 110000; n++) {
 		double x = (double)n / 100000;
-		int code = colour_srgb_byte(test_real(x * fabs(x)));
+		int code = colour_byte(test_real(x * fabs(x)));
 		if (code < previous && decreases++ == 0)
-			printf("%s:%d: colour_srgb_byte(%.17g): expected at least %d (a smaller "
+			printf("%s:%d: colour_byte(%.17g): expected at least %d (a smaller "
 			       "value's), got %d\n",
 			       __FILE__, __LINE__, x * fabs(x), previous, code);
 		previous = code;
@@ -127,11 +127,11 @@ static void test_round_trip(void)
 	for (k = 0; k < 256; k++) {
 		real v = real_div(real_from_int(k), REAL_C(255.0));
 		vec3 c = colour_srgb_to_linear(vec_make(v, v, v));
-		if (!CHECK_INT(colour_srgb_byte(c.x), k))
+		if (!CHECK_INT(colour_byte(c.x), k))
 			break;
 	}
 	/* b 0.5 0.5 0.5 decodes to 0.214 and shows as code 128 (0.5 * 255 = 127.5 rounds up). */
-	CHECK_INT(colour_srgb_byte(colour_srgb_to_linear(vec_make(REAL_C(0.5), REAL_C(0.5),
+	CHECK_INT(colour_byte(colour_srgb_to_linear(vec_make(REAL_C(0.5), REAL_C(0.5),
 							       REAL_C(0.5))).y),
 		  128);
 }
