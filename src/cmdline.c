@@ -51,11 +51,10 @@ static int take_value(cmdline *c, const cmdline_option *options, int i, const ch
 /* Appends text to c->written, cut to fit. */
 static void append_written(cmdline *c, const char *text)
 {
-	size_t used = strlen(c->written), n = strlen(text);
-	if (n > sizeof c->written - 1 - used)
-		n = sizeof c->written - 1 - used;
-	memcpy(c->written + used, text, n);
-	c->written[used + n] = '\0';
+	size_t used = strlen(c->written);
+	while (*text != '\0' && used < sizeof c->written - 1)
+		c->written[used++] = *text++;
+	c->written[used] = '\0';
 }
 
 /* How a long option as written (`text`, up to its = or its end) matches a name: 2 when

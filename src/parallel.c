@@ -172,7 +172,7 @@ static void work(const job *jb, int fd)
 /* Forks worker i. 0, with errno, when it cannot. */
 static int start_worker(int i, const job *jb)
 {
-	int ends[2], j;
+	int ends[2];
 	pid_t pid;
 	if (socketpair(AF_UNIX, SOCK_STREAM, 0, ends) != 0)
 		return 0;
@@ -185,6 +185,7 @@ static int start_worker(int i, const job *jb)
 		return 0;
 	}
 	if (pid == 0) {
+		int j;
 		/* The parent's signal handlers, temporary file and other workers' sockets are
 		 * not this process's: a worker ends as signals end any process, and sees end
 		 * of file when the parent closes its own socket. */
@@ -215,10 +216,13 @@ static int finish_workers(int stop, int culprit)
 	for (i = 0; i < worker_count; i++)
 		close(workers[i].socket);
 	for (i = 0; i < worker_count; i++) {
+		int report;
 		while (waitpid(workers[i].pid, &status, 0) < 0 && errno == EINTR)
 			;
 		worker_pids[i] = 0;
-		if (stop ? i != culprit : WIFEXITED(status) && WEXITSTATUS(status) == 0)
+		/* Stopped: the one that failed; otherwise any that did not end normally. */
+		report = stop ? i == culprit : !WIFEXITED(status) || WEXITSTATUS(status) != 0;
+		if (!report)
 			continue;
 		if (fine && WIFSIGNALED(status))
 			diag_error(NULL, 0, "worker process %d of %d (pid %ld) was ended by signal %d "
@@ -349,7 +353,7 @@ int render_parallel(tracer *t, const camera *c, enum render_sampling sampling,
 	jb.sampling = aa ? SAMPLE_CORNERS : sampling;
 	jb.aa = aa;
 	jb.corners = RT_CORNER_SAMPLING && jb.sampling == SAMPLE_CORNERS;
-	jb.line_length = (size_t)(c->width + jb.corners);
+	jb.line_length = (size_t)c->width + (size_t)jb.corners;
 	jb.slot_length = jb.line_length * (aa ? 2 : 1);
 	end = y1 + jb.corners; /* lines [y0, end) make rows [y0, y1) */
 	/* As many workers as there are lines, and as the window holds at this width. */
