@@ -48,8 +48,8 @@
 #define RT_MAX_MEDIA 8 /* nested transmitting objects a ray can be inside at once */
 #endif
 #ifndef RT_PARALLEL_POOL
-/* -j's window, in colours (and as many ids): two lines a worker, and two more, of the
- * image's width; 2^19 holds 64 workers to 4,000 pixels wide, and fewer beyond. */
+/* -j's window, in colours (and as many ids): three lines a process, and two more, of the
+ * image's width; 2^19 holds 64 processes to 2,700 pixels wide, 21 at 8,192. */
 #define RT_PARALLEL_POOL (1L << 19)
 #endif
 #ifndef RT_TOKEN_MAX

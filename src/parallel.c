@@ -49,6 +49,11 @@ static vec3 pool[RT_PARALLEL_POOL];
 static int pool_ids[RT_PARALLEL_POOL];
 static int no_ids[RT_MAX_WIDTH]; /* -a's rows: four or more rays a pixel, no one object */
 
+/* The window's most slots: lines may run ahead of the row that leaves next by up to
+ * WINDOW_PER_JOB a process (a worker's two units and the parent's one). */
+#define WINDOW_PER_JOB 3
+#define WINDOW_MAX (PARALLEL_MAX_JOBS * WINDOW_PER_JOB + 2)
+
 enum unit_kind {
 	UNIT_LINE, /* trace sample line `index` (render_line) */
 	UNIT_ROW   /* -a: refine pixel row `index` from its two corner lines, sent after */
@@ -244,9 +249,9 @@ static int finish_workers(int stop, int culprit)
  * same number; a flag for each (done, and for rows also handed out). */
 static struct {
 	int first, size; /* the first line's number; slots */
-	unsigned char line_done[PARALLEL_MAX_JOBS * UNITS_PER_WORKER + 2];
-	unsigned char row_sent[PARALLEL_MAX_JOBS * UNITS_PER_WORKER + 2];
-	unsigned char row_done[PARALLEL_MAX_JOBS * UNITS_PER_WORKER + 2];
+	unsigned char line_done[WINDOW_MAX];
+	unsigned char row_sent[WINDOW_MAX];
+	unsigned char row_done[WINDOW_MAX];
 } window;
 
 static int slot_of(int index)
@@ -342,10 +347,37 @@ static int row_ready(const job *jb, int y)
 	return window.line_done[slot_of(y)] && (!jb->corners || window.line_done[slot_of(y + 1)]);
 }
 
+/* The parent's own share of the work, between looking after the workers: a row to
+ * refine (-a) whose lines are in, else the next line inside the window, traced straight
+ * into its slot with the parent's tracer. Returns 0 when there is none to take. */
+static int work_here(const job *jb, tracer *here, int *next_line, int *next_row, int row,
+		     int end, int y1)
+{
+	if (jb->aa && *next_row < y1 && *next_row + 1 < *next_line &&
+	    window.line_done[slot_of(*next_row)] && window.line_done[slot_of(*next_row + 1)]) {
+		int y = (*next_row)++;
+		antialias_row(here, jb->c, jb->aa, y, line_colours(jb, y), line_ids(jb, y),
+			      line_colours(jb, y + 1), line_ids(jb, y + 1), row_colours(jb, y));
+		window.row_sent[slot_of(y)] = window.row_done[slot_of(y)] = 1;
+		return 1;
+	}
+	if (*next_line < end && *next_line < row + window.size) {
+		int y = (*next_line)++;
+		render_line(here, jb->c, jb->sampling, y, line_colours(jb, y), line_ids(jb, y));
+		window.line_done[slot_of(y)] = 1;
+		return 1;
+	}
+	return 0;
+}
+
 int render_parallel(tracer *t, const camera *c, enum render_sampling sampling,
 		    const antialias *aa, int y0, int y1, sink *out, int jobs, progress_fn progress,
 		    void *progress_ctx)
 {
+	/* The parent traces too (jobs - 1 workers and itself: no more processes than
+	 * jobs, so none waits for a core), with a tracer of its own whose counts it adds to
+	 * the workers'. */
+	static tracer here;
 	job jb;
 	int end, next_line = y0, next_row = y0, row = y0, i, k, fitting;
 	jb.t = t;
@@ -356,8 +388,8 @@ int render_parallel(tracer *t, const camera *c, enum render_sampling sampling,
 	jb.line_length = (size_t)c->width + (size_t)jb.corners;
 	jb.slot_length = jb.line_length * (aa ? 2 : 1);
 	end = y1 + jb.corners; /* lines [y0, end) make rows [y0, y1) */
-	/* As many workers as there are lines, and as the window holds at this width. */
-	fitting = (int)((RT_PARALLEL_POOL / (long)jb.slot_length - 2) / UNITS_PER_WORKER);
+	/* As many processes as there are lines, and as the pool holds windows for. */
+	fitting = (int)((RT_PARALLEL_POOL / (long)jb.slot_length - 2) / WINDOW_PER_JOB);
 	jobs = jobs < end - y0 ? jobs : end - y0;
 	jobs = jobs < fitting ? jobs : fitting;
 	if (jobs <= 1)
@@ -367,8 +399,10 @@ int render_parallel(tracer *t, const camera *c, enum render_sampling sampling,
 		return 0;
 	for (i = 0; i < c->width; i++)
 		no_ids[i] = -1;
+	here = *t;
+	memset(&here.stats, 0, sizeof here.stats);
 	output_on_end(parallel_stop);
-	while (worker_count < jobs && start_worker(worker_count, &jb))
+	while (worker_count < jobs - 1 && start_worker(worker_count, &jb))
 		;
 	if (worker_count == 0) {
 		diag_error(NULL, 0, "cannot start a worker process: %s", strerror(errno));
@@ -376,13 +410,13 @@ int render_parallel(tracer *t, const camera *c, enum render_sampling sampling,
 		return -1;
 	}
 	window.first = y0;
-	window.size = worker_count * UNITS_PER_WORKER + 2;
+	window.size = (worker_count + 1) * WINDOW_PER_JOB + 2;
 	memset(window.line_done, 0, sizeof window.line_done);
 	memset(window.row_sent, 0, sizeof window.row_sent);
 	memset(window.row_done, 0, sizeof window.row_done);
 	while (row < y1) {
 		struct pollfd ready[PARALLEL_MAX_JOBS];
-		int waiting[PARALLEL_MAX_JOBS], count = 0, culprit = -1;
+		int waiting[PARALLEL_MAX_JOBS], count = 0, culprit = -1, busy;
 		/* With -a, rows whose corner lines are both in go first, each to a worker with
 		 * nothing to do (which is reading, so the lines sent after it cannot fill the
 		 * socket while that worker sends): they let the output move on. */
@@ -398,8 +432,7 @@ int render_parallel(tracer *t, const camera *c, enum render_sampling sampling,
 			}
 		/* Lines to every worker with room, one each in turn, inside the window. */
 		for (k = 1; culprit < 0 && k <= UNITS_PER_WORKER; k++)
-			for (i = 0; i < worker_count && next_line < end &&
-				    next_line < row + window.size;
+			for (i = 0; i < worker_count && next_line < end && next_line < row + window.size;
 			     i++) {
 				if (workers[i].in_flight >= k)
 					continue;
@@ -409,13 +442,16 @@ int render_parallel(tracer *t, const camera *c, enum render_sampling sampling,
 				}
 				next_line++;
 			}
+		/* A unit here; then a look at the workers without waiting, or, with nothing
+		 * left here, a wait for them. */
+		busy = culprit < 0 && work_here(&jb, &here, &next_line, &next_row, row, end, y1);
 		for (i = 0; culprit < 0 && i < worker_count; i++)
 			if (workers[i].in_flight > 0) {
 				ready[count].fd = workers[i].socket;
 				ready[count].events = POLLIN;
 				waiting[count++] = i;
 			}
-		if (culprit < 0 && poll(ready, (nfds_t)count, -1) < 0) {
+		if (culprit < 0 && count > 0 && poll(ready, (nfds_t)count, busy ? 0 : -1) < 0) {
 			if (errno == EINTR)
 				continue;
 			diag_error(NULL, 0, "waiting for the workers: %s", strerror(errno));
@@ -430,6 +466,11 @@ int render_parallel(tracer *t, const camera *c, enum render_sampling sampling,
 			return -1;
 		}
 		sum_stats(&t->stats);
+		t->stats.eye_rays += here.stats.eye_rays;
+		t->stats.eye_hits += here.stats.eye_hits;
+		t->stats.shadow_rays += here.stats.shadow_rays;
+		t->stats.reflect_rays += here.stats.reflect_rays;
+		t->stats.refract_rays += here.stats.refract_rays;
 		/* The rows now complete leave in order. */
 		while (row < y1 && row_ready(&jb, row)) {
 			vec3 *colours = aa ? row_colours(&jb, row) : line_colours(&jb, row);
