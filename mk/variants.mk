@@ -33,8 +33,8 @@ check-clang: $(TYPES:%=build/clang/rt-%)
 
 # The unit tests in every number type (each type's tolerances are in the tests).
 build/unit-tests-%: $(LIB_SRC) $(TEST_SRC) $(HDR) $(TEST_HDR)
-	$(call whole-program,$(CC),$(RT_CFLAGS) $(VARIANT_FLAGS_$*) -Isrc $(CPPFLAGS) $(CFLAGS), \
-		$(LIB_SRC) $(TEST_SRC),$(LINK_LIBS))
+	$(call whole-program,$(CC),$(RT_CFLAGS) $(VARIANT_FLAGS_$*) $(TEST_CAPACITIES) -Isrc \
+		$(CPPFLAGS) $(CFLAGS),$(LIB_SRC) $(TEST_SRC),$(LINK_LIBS))
 # Q16.16: the library is built as build/rt-fixed is, with no floating point
 # (-mgeneral-regs-only on x86-64), file by file into build/fixed/. The tests themselves
 # cannot do without it: they build their reference rays, rotations and expected values
@@ -44,10 +44,11 @@ FIXED_LIB_OBJ = $(LIB_SRC:src/%.c=build/fixed/%.o)
 FIXED_TEST_OBJ = $(TEST_SRC:tests/%.c=build/fixed/tests/%.o)
 build/fixed/%.o: src/%.c
 	@mkdir -p $(@D)
-	$(CC) $(RT_CFLAGS) $(VARIANT_FLAGS_fixed) $(CPPFLAGS) $(CFLAGS) -c -o $@ $<
+	$(CC) $(RT_CFLAGS) $(VARIANT_FLAGS_fixed) $(TEST_CAPACITIES) $(CPPFLAGS) $(CFLAGS) -c -o $@ $<
 build/fixed/tests/%.o: tests/%.c
 	@mkdir -p $(@D)
-	$(CC) $(RT_CFLAGS) $(filter -D%,$(VARIANT_FLAGS_fixed)) -Isrc $(CPPFLAGS) $(CFLAGS) -c -o $@ $<
+	$(CC) $(RT_CFLAGS) $(filter -D%,$(VARIANT_FLAGS_fixed)) $(TEST_CAPACITIES) -Isrc $(CPPFLAGS) \
+		$(CFLAGS) -c -o $@ $<
 build/unit-tests-fixed: $(FIXED_TEST_OBJ) $(FIXED_LIB_OBJ)
 	$(CC) $(LDFLAGS) -o $@ $(FIXED_TEST_OBJ) $(FIXED_LIB_OBJ) $(LDLIBS) $(RT_LDLIBS)
 algorithms: $(ALGORITHMS:%=build/rt-%)
@@ -65,7 +66,8 @@ build/san/rt: $(SRC) $(HDR)
 # would catch there).
 build/san/unit-tests build/san/unit-tests-fixed: build/san/unit-tests%: $(SRC) $(TEST_SRC) \
 		$(HDR) $(TEST_HDR)
-	$(call whole-program,$(CC),$(SAN_CFLAGS) -Isrc $(CPPFLAGS) -O1,$(LIB_SRC) $(TEST_SRC),$(LINK_LIBS))
+	$(call whole-program,$(CC),$(SAN_CFLAGS) $(TEST_CAPACITIES) -Isrc $(CPPFLAGS) -O1, \
+		$(LIB_SRC) $(TEST_SRC),$(LINK_LIBS))
 build/san/replay build/san/replay-fixed: build/san/replay%: $(REPLAY_SRC) $(HDR)
 	$(call whole-program,$(CC),$(SAN_CFLAGS) -Isrc $(CPPFLAGS) -O1,$(REPLAY_SRC),$(LINK_LIBS))
 
@@ -79,7 +81,7 @@ MSAN_TEST = $(if $(shell command -v $(MSAN_CC)),$(MSAN_BUILDS))
 MSAN_CFLAGS = $(WARN) -ffp-contract=off $(MSAN_FLAGS) $(if $*,-DRT_REAL_FIXED)
 build/msan/unit-tests build/msan/unit-tests-fixed: build/msan/unit-tests%: $(SRC) $(TEST_SRC) \
 		$(HDR) $(TEST_HDR)
-	$(call whole-program,$(MSAN_CC),$(MSAN_CFLAGS) -Isrc,$(LIB_SRC) $(TEST_SRC),-lm)
+	$(call whole-program,$(MSAN_CC),$(MSAN_CFLAGS) $(TEST_CAPACITIES) -Isrc,$(LIB_SRC) $(TEST_SRC),-lm)
 build/msan/replay build/msan/replay-fixed: build/msan/replay%: $(REPLAY_SRC) $(HDR)
 	$(call whole-program,$(MSAN_CC),$(MSAN_CFLAGS) -Isrc,$(REPLAY_SRC),-lm)
 build/msan/rt-fixed: $(SRC) $(HDR)

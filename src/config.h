@@ -7,7 +7,10 @@
 /* Each capacity may be overridden with -DNAME=value (the MCU build shrinks them).
  * Exceeding one at run time is a clear error that names the macro to raise. */
 #ifndef RT_MAX_OBJECTS
-#define RT_MAX_OBJECTS 16384 /* primitives in a scene (SPD standard scenes need < 10,000) */
+/* Primitives in a scene: 2 M (bss costs nothing until a scene touches it; the MCU sets
+ * its own). More would pass the 2 GiB that x86-64's default code model allows static
+ * data, in long double. */
+#define RT_MAX_OBJECTS 2097152
 #endif
 #ifndef RT_MAX_LIGHTS
 #define RT_MAX_LIGHTS 64 /* point lights */
@@ -16,13 +19,13 @@
 #define RT_MAX_MATERIALS 1024 /* distinct `f` materials (repeats share one slot) */
 #endif
 #ifndef RT_MAX_VERTICES
-#define RT_MAX_VERTICES 65536 /* polygon and patch vertices, all polygons together */
+#define RT_MAX_VERTICES 4194304 /* polygon and patch vertices, all polygons together */
 #endif
 #ifndef RT_MAX_POLY_VERTS
 #define RT_MAX_POLY_VERTS 1024 /* vertices of one polygon (SPD gears needs 144) */
 #endif
 #ifndef RT_MAX_PLANES
-#define RT_MAX_PLANES 4096 /* bounding planes, all polyhedra together */
+#define RT_MAX_PLANES 1048576 /* bounding planes, all polyhedra together */
 #endif
 #ifndef RT_MAX_HEDRON_PLANES
 #define RT_MAX_HEDRON_PLANES 64 /* planes of one polyhedron */

@@ -30,7 +30,8 @@ static int ids_row(sink *self, const vec3 *colors, const int *ids);
  * for the ID sink (the one whose rows are ids_row), else a PPM. */
 static int pnm_begin(sink *self, int width, int height)
 {
-	int ids = self->row == ids_row;
+	/* 16-bit IDs, unless the scene has more objects (builds whose capacity allows it). */
+	int ids = self->row == ids_row && !(RT_MAX_OBJECTS > 65534 && ((ppm_sink *)self)->wide);
 	((ppm_sink *)self)->width = width;
 	return write_pnm_header(self->write, self->ctx, ids ? 5 : 6, width, height,
 				ids ? 65535 : 255);
@@ -59,10 +60,19 @@ void ppm_sink_init(ppm_sink *p, write_fn write, void *ctx)
 
 static int ids_row(sink *self, const vec3 *colors, const int *ids)
 {
-	static unsigned char bytes[2 * RT_MAX_WIDTH];
+	static unsigned char bytes[3 * RT_MAX_WIDTH];
 	ids_sink *p = (ids_sink *)self;
 	int x;
 	(void)colors;
+	if (RT_MAX_OBJECTS > 65534 && p->wide) {
+		for (x = 0; x < p->width; x++) {
+			unsigned value = ids[x] < 0 ? 0u : (unsigned)ids[x] + 1u; /* below 2^24 */
+			bytes[3 * x] = (unsigned char)(value >> 16);
+			bytes[3 * x + 1] = (unsigned char)(value >> 8 & 0xFF);
+			bytes[3 * x + 2] = (unsigned char)(value & 0xFF);
+		}
+		return self->write(self->ctx, bytes, (size_t)p->width * 3);
+	}
 	for (x = 0; x < p->width; x++) {
 		unsigned value = ids[x] < 0 ? 0u : (unsigned)ids[x] + 1u;
 		bytes[2 * x] = (unsigned char)(value >> 8);

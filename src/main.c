@@ -38,7 +38,8 @@ static void print_seconds(const char *name, unsigned long long micros)
 
 /* extra_eye_rays: -a's rays beyond the pixels' corners, -1 without -a. */
 static void print_stats(const trace_stats *st, long extra_eye_rays,
-			unsigned long long parse_micros, unsigned long long micros)
+			unsigned long long parse_micros, unsigned long long build_micros,
+			unsigned long long micros)
 {
 	unsigned long rays = st->eye_rays + st->shadow_rays + st->reflect_rays + st->refract_rays;
 	fprintf(stderr, "objects: %d\n", the_scene.object_count);
@@ -50,6 +51,7 @@ static void print_stats(const trace_stats *st, long extra_eye_rays,
 	fprintf(stderr, "reflect_rays: %lu\n", st->reflect_rays);
 	fprintf(stderr, "refract_rays: %lu\n", st->refract_rays);
 	print_seconds("parse_seconds", parse_micros);
+	print_seconds("build_seconds", build_micros);
 	print_seconds("seconds", micros);
 	fprintf(stderr, "rays_per_second: %llu\n",
 		micros ? (unsigned long long)rays * 1000000u / micros : 0u);
@@ -70,7 +72,7 @@ int main(int argc, char **argv)
 	sink *target;
 	const char *why;
 	int status = options_parse(argc, argv, &opt), width, height, rows, depth, ok;
-	unsigned long long start, parsed;
+	unsigned long long start, loaded, parsed;
 	const accel *searched; /* the scene and its hierarchy */
 
 	if (status >= 0)
@@ -84,6 +86,7 @@ int main(int argc, char **argv)
 	start = term_micros();
 	if (!load_scene_file(&the_scene, opt.scene_path))
 		return 1;
+	loaded = term_micros();
 	searched = accel_build(&the_scene);
 	parsed = term_micros();
 	width = opt.width ? opt.width : the_scene.camera.width;
@@ -123,6 +126,7 @@ int main(int argc, char **argv)
 		break;
 	case FORMAT_IDS:
 		ids_sink_init(&sinks.ids, output_write, &out);
+		sinks.ids.wide = the_scene.object_count > 65534;
 		target = &sinks.ids.base;
 		break;
 	case FORMAT_ASCII:
@@ -161,6 +165,6 @@ int main(int argc, char **argv)
 			    opt.antialias ? (long)the_tracer.stats.eye_rays -
 						    (long)(width + 1) * (rows + 1)
 					  : -1,
-			    parsed - start, term_micros() - parsed);
+			    loaded - start, parsed - loaded, term_micros() - parsed);
 	return 0;
 }

@@ -18,8 +18,9 @@
 
 #define RT_VERSION "0.2.0"
 
-/* --ids writes object numbers as 16-bit samples; 0 is "no object". */
-RT_STATIC_ASSERT(ids_fit_16_bits, RT_MAX_OBJECTS < 65536);
+/* --ids writes 1 + each object's index in 16 bits, or beyond 65,534 objects in 24; 0 is
+ * "no object". */
+RT_STATIC_ASSERT(ids_fit_24_bits, RT_MAX_OBJECTS < 16777216L);
 
 static const char usage_text[] =
 	"Usage: rt [OPTION]... SCENE\n"
@@ -57,7 +58,8 @@ static const char usage_text[] =
 	"               light, written as sRGB) or classic (NFF's values as they are, no\n"
 	"               curve either way); overrides the scene's own `colours` command\n"
 	"  --ids        instead of colours, write a 16-bit PGM of the object each pixel's\n"
-	"               eye ray hits first (1 + its index in the scene; 0 for none)\n"
+	"               eye ray hits first (1 + its index in the scene; 0 for none); past\n"
+	"               65,534 objects a PPM whose RGB bytes are a 24-bit ID (-o x.ppm)\n"
 	"  --rows Y0:Y1 render only rows Y0 to Y1-1, as a PPM of that band (for splitting\n"
 	"               a render across machines: see docs/speed.md)\n"
 	"  --spd        SPD testing procedure: corner rays, depth 5, no weight cutoff\n"
@@ -157,7 +159,12 @@ static enum format format_of(const char *path)
 /* Sets the format, refusing two different ones. */
 static int choose_format(options *o, enum format f, const char *why)
 {
-	if (o->format != FORMAT_DEFAULT && o->format != f)
+	/* --ids may be named .ppm: scenes of 65,535 objects and more get their IDs in one. */
+	if ((o->format == FORMAT_IDS && f == FORMAT_PPM && why == o->output_path) ||
+	    (o->format == FORMAT_PPM && f == FORMAT_IDS && o->output_path &&
+	     format_of(o->output_path) == FORMAT_PPM))
+		f = FORMAT_IDS;
+	else if (o->format != FORMAT_DEFAULT && o->format != f)
 		return usage_error("conflicting output formats ('%s')", why);
 	o->format = f;
 	return -1;

@@ -399,8 +399,7 @@ int render_parallel(tracer *t, const camera *c, enum render_sampling sampling,
 		return 0;
 	for (i = 0; i < c->width; i++)
 		no_ids[i] = -1;
-	here = *t;
-	memset(&here.stats, 0, sizeof here.stats);
+	trace_copy(&here, t);
 	output_on_end(parallel_stop);
 	while (worker_count < jobs - 1 && start_worker(worker_count, &jb))
 		;

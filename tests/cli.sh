@@ -757,6 +757,26 @@ for q in -q --quiet; do
 	expect_err "$q with an error" "58-from-equals-at.nff:2: view:"
 done
 
+# ---- scenes of many objects ----------------------------------------------------------------
+# 70,000 spheres (past --ids' 16 bits, and past the 16,384 rt once held): small ones out of
+# sight, then one in the middle of the view, object 70,000. --ids names it in a PPM of
+# 24-bit IDs: the centre pixel's bytes are 70,000 = (1, 17, 112).
+{
+	printf 'v\nfrom 0 0 -10\nat 0 0 0\nup 0 1 0\nangle 10\nhither 0.01\nresolution 9 9\nl 0 0 -10\nf 1 1 1 1 0 0 0 1\n'
+	awk 'BEGIN { for (i = 0; i < 69999; i++) printf "s %d %d 50 0.1\n", i % 300 + 100, int(i / 300) }'
+	printf 's 0 0 0 1\n'
+} >"$tmp/many.nff"
+run --ids --stats -o "$tmp/many.ppm" "$tmp/many.nff"
+expect_status "70,000 objects" 0
+expect_err "70,000 objects" "objects: 70000"
+expect_err "70,000 objects" "build_seconds: "
+if ppm_header_is "$tmp/many.ppm" 9 9 && [ "$(tail -c +15 "$tmp/many.ppm" | od -An -tu1 -j 120 -N 3 | tr -s ' ')" = " 1 17 112" ]; then ok; else
+	bad "--ids with 70,000 objects: not a PPM of 24-bit IDs with 70000 at the centre"
+fi
+run --ids -s 9x9 -o "$tmp/few.pgm" scenes/glass.nff
+expect_status "--ids with one object" 0
+if head -c 2 "$tmp/few.pgm" | grep -q P5; then ok; else bad "--ids with one object: not a 16-bit PGM"; fi
+
 # ---- the colour pipeline -----------------------------------------------------------------
 # A grey sphere (0.5, Kd 0.5) lit head-on: classic takes 0.5 as it is and writes 0.25 as 64
 # (of 255); sRGB decodes 0.5 to 0.214, lights it to 0.107 and writes that as 92.
