@@ -11,7 +11,11 @@ VARIANT_FLAGS_ref = -DRT_REAL_LONG_DOUBLE
 VARIANT_FLAGS_fixed = -DRT_REAL_FIXED $(if $(filter x86_64,$(shell uname -m)),-mgeneral-regs-only)
 # For hosts with little address space (README, "Memory"): a 16 MiB PNG arena (PNG up to
 # 640x480 and a little more) and 4,096 objects.
-VARIANT_FLAGS_small = -DRT_REAL_DOUBLE -DRT_MAX_OBJECTS=4096 -DRT_PARALLEL_POOL=65536L
+VARIANT_FLAGS_small = -DRT_REAL_DOUBLE -DRT_MAX_OBJECTS=4096 -DRT_MAX_VERTICES=16384 \
+	-DRT_MAX_PLANES=4096 -DRT_PARALLEL_POOL=65536L
+# The capacities rt had before they reached the millions: tests/bad's limit cases run on it.
+VARIANT_FLAGS_limits = -DRT_REAL_DOUBLE -DRT_MAX_OBJECTS=16384 -DRT_MAX_VERTICES=65536 \
+	-DRT_MAX_PLANES=4096
 VARIANT_FLAGS_sphere-textbook = -DRT_REAL_DOUBLE -DRT_NAIVE=RT_NAIVE_SPHERE
 VARIANT_FLAGS_hedron-per-face = -DRT_REAL_DOUBLE -DRT_NAIVE=RT_NAIVE_HEDRON
 VARIANT_FLAGS_offset-fixed = -DRT_REAL_DOUBLE -DRT_NAIVE=RT_NAIVE_OFFSET

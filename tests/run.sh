@@ -40,6 +40,9 @@ set -- tests/fuzz/corpus/*
 [ -d tests/good ] && set -- "$@" tests/good/*.nff
 tally fuzz-replay "$(./build/san/replay "$@" 2>&1)"
 tally fuzz-replay-fixed "$(./build/san/replay-fixed "$@" 2>&1)"
+# The capacity limits' scenes (tests/bad/97-99) run on a build of small capacities.
+LIMITS_RT=$(pwd)/build/rt-limits
+export LIMITS_RT
 for script in tests/cli.sh tests/golden.sh tests/bad.sh tests/parallel.sh tests/antialias.sh; do
 	[ -f "$script" ] || continue
 	name=$(basename "$script" .sh)
