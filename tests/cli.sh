@@ -4,12 +4,7 @@
 # See LICENSE for copyright and licence.
 
 . tests/lib.sh
-RT=${RT:-./rt}
-# Absolute, so a test may run from another directory.
-case $RT in
-/*) ;;
-*) RT=$(pwd)/$RT ;;
-esac
+rt_absolute
 make_tmp
 
 # ---- helpers (ok, bad, run, size_of and the PPM checks are in tests/lib.sh) ----------

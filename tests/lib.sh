@@ -21,6 +21,15 @@ summary() {
 	[ "$failed" -eq 0 ]
 }
 
+# rt_absolute: $RT (default ./rt) made absolute, so that a test may run from another folder.
+rt_absolute() {
+	RT=${RT:-./rt}
+	case $RT in
+	/*) ;;
+	*) RT=$(pwd)/$RT ;;
+	esac
+}
+
 # make_tmp: $tmp, a new folder (rt-SUITE.XXXXXX) removed however the suite ends.
 make_tmp() {
 	tmp=$(mktemp -d "${TMPDIR:-/tmp}/rt-$(basename "$0" .sh).XXXXXX") || exit 1

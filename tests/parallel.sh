@@ -6,11 +6,7 @@
 # See LICENSE for copyright and licence.
 
 . tests/lib.sh
-RT=${RT:-./rt}
-case $RT in
-/*) ;;
-*) RT=$(pwd)/$RT ;;
-esac
+rt_absolute
 make_tmp
 run_limit=120
 

@@ -25,16 +25,14 @@ static void basis(const camera *c, double f[3], double r[3], double u[3])
 	u[2] = test_unit_double(c->up.z);
 }
 
-/* Every ray of an image (pixel centres) and of its corner lines, against
- * normalize(forward + u right + v up) from the same basis in double, with u and v from
- * the true tan(angle / 2): within `tolerance`. And each ray lies in its line's plane. */
-static void eye_rays(real angle, int width, int height, double tolerance, double plane_tolerance)
+/* The test view (from, at and up askew) at `angle` on a width x height image: its camera,
+ * basis in double and the half width the rays are checked against (floating point's own
+ * tangent, since near 90 degrees a rounding of the angle moves it far; fixed point's from
+ * the angle in double). 0 if the camera refuses it. */
+static int test_view(real angle, int width, int height, camera *c, double f[3], double r[3],
+		     double u[3], double *hw)
 {
-	const double tol[] = {tolerance, plane_tolerance};
 	view v;
-	camera c;
-	double f[3], r[3], u[3], hw, worst = 0.0, worst_plane = 0.0;
-	int x, y, corners, from_eye = 1;
 	v.from = VEC_C(1.0, -7.0, 2.5);
 	v.at = VEC_C(0.5, 0.0, 0.75);
 	v.up = VEC_C(0.0, 0.2, 1.0);
@@ -42,13 +40,26 @@ static void eye_rays(real angle, int width, int height, double tolerance, double
 	v.hither = REAL_C(0.0);
 	v.width = width;
 	v.height = height;
-	if (!CHECK(camera_init(&c, &v, width, height) == NULL))
+	if (!CHECK(camera_init(c, &v, width, height) == NULL))
+		return 0;
+	basis(c, f, r, u);
+	*hw = REAL_FIXED ? tan(test_double(angle) * 3.14159265358979323846 / 360.0)
+			 : test_double(c->half_width);
+	return 1;
+}
+
+/* Every ray of an image (pixel centres) and of its corner lines, against
+ * normalize(forward + u right + v up) from the same basis in double, with u and v from
+ * the true tan(angle / 2): within `tolerance`. And each ray lies in its line's plane. */
+static void eye_rays(real angle, int width, int height, double tolerance, double plane_tolerance)
+{
+	const double tol[] = {tolerance, plane_tolerance};
+	camera c;
+	double f[3], r[3], u[3], hw, worst = 0.0, worst_plane = 0.0;
+	int x, y, corners, from_eye = 1;
+	const vec3 from = VEC_C(1.0, -7.0, 2.5);
+	if (!test_view(angle, width, height, &c, f, r, u, &hw))
 		return;
-	basis(&c, f, r, u);
-	/* Floating point's own tangent (near 90 degrees a rounding of the angle moves it far);
-	 * fixed point's from the angle in double. */
-	hw = REAL_FIXED ? tan(test_double(angle) * 3.14159265358979323846 / 360.0)
-			: test_double(c.half_width);
 	for (corners = 0; corners < 2; corners++) {
 		for (y = 0; y < height + corners; y++) {
 			int y2 = 2 * y + !corners;
@@ -74,8 +85,8 @@ static void eye_rays(real angle, int width, int height, double tolerance, double
 					dn += got * n[i];
 				}
 				worst_plane = fabs(dn) > worst_plane ? fabs(dn) : worst_plane;
-				from_eye &= ray_.origin.x == v.from.x && ray_.origin.y == v.from.y &&
-					    ray_.origin.z == v.from.z;
+				from_eye &= ray_.origin.x == from.x && ray_.origin.y == from.y &&
+					    ray_.origin.z == from.z;
 			}
 		}
 	}
@@ -197,22 +208,11 @@ static void test_too_wide(void)
  * own tolerance. */
 static void rays_at(real angle, int width, int height, double tolerance)
 {
-	view v;
 	camera c;
 	double f[3], r[3], u[3], hw, worst = 0.0;
 	int x, y, shift, corners, same = 1;
-	v.from = VEC_C(1.0, -7.0, 2.5);
-	v.at = VEC_C(0.5, 0.0, 0.75);
-	v.up = VEC_C(0.0, 0.2, 1.0);
-	v.angle = angle;
-	v.hither = REAL_C(0.0);
-	v.width = width;
-	v.height = height;
-	if (!CHECK(camera_init(&c, &v, width, height) == NULL))
+	if (!test_view(angle, width, height, &c, f, r, u, &hw))
 		return;
-	basis(&c, f, r, u);
-	hw = REAL_FIXED ? tan(test_double(angle) * 3.14159265358979323846 / 360.0)
-			: test_double(c.half_width);
 	for (corners = 0; corners < 2; corners++)
 		for (y = 0; y < height + corners; y++) {
 			camera_line line = camera_line_at(&c, 2 * y + !corners, !corners);
