@@ -86,6 +86,7 @@ typedef struct {
 	enum render_sampling sampling;
 	const antialias *aa;   /* NULL: none */
 	int corners;           /* lines of corners (--spd, -a) */
+	int ids;               /* lines carry their ids (not --spd's corners, whose means have none) */
 	size_t line_length;    /* colours in a line: the width, + 1 for corners */
 	size_t slot_length;    /* colours in a slot */
 } job;
@@ -165,7 +166,7 @@ static void work(const job *jb, int fd)
 		ok = send_full(fd, &u, sizeof u, 0);
 		if (u.kind == UNIT_LINE)
 			ok = ok && send_full(fd, colours[0], n * sizeof(vec3), 0) &&
-			     send_full(fd, ids[0], n * sizeof(int), 0);
+			     (!jb->ids || send_full(fd, ids[0], n * sizeof(int), 0));
 		else
 			ok = ok && send_full(fd, pixels, (n - 1) * sizeof(vec3), 0);
 		if (!ok)
@@ -287,7 +288,8 @@ static int receive(const job *jb, worker *w, int end)
 	if (u.kind == UNIT_LINE) {
 		if (window.line_done[slot] ||
 		    !read_full(w->socket, line_colours(jb, u.index), jb->line_length * sizeof(vec3)) ||
-		    !read_full(w->socket, line_ids(jb, u.index), jb->line_length * sizeof(int)))
+		    (jb->ids &&
+		     !read_full(w->socket, line_ids(jb, u.index), jb->line_length * sizeof(int))))
 			return 0;
 		window.line_done[slot] = 1;
 	} else {
@@ -385,6 +387,7 @@ int render_parallel(tracer *t, const camera *c, enum render_sampling sampling,
 	jb.sampling = aa ? SAMPLE_CORNERS : sampling;
 	jb.aa = aa;
 	jb.corners = RT_CORNER_SAMPLING && jb.sampling == SAMPLE_CORNERS;
+	jb.ids = !jb.corners || aa;
 	jb.line_length = (size_t)c->width + (size_t)jb.corners;
 	jb.slot_length = jb.line_length * (aa ? 2 : 1);
 	end = y1 + jb.corners; /* lines [y0, end) make rows [y0, y1) */
