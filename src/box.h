@@ -23,4 +23,16 @@ static inline void box_grow(vec3 *lo, vec3 *hi, vec3 p)
 	hi->z = real_max(hi->z, p.z);
 }
 
+/* Grows the box to hold the box [blo, bhi] (blo <= bhi in every axis): the same as
+ * growing by both corners, in half the comparisons. */
+static inline void box_grow_box(vec3 *lo, vec3 *hi, vec3 blo, vec3 bhi)
+{
+	lo->x = real_min(lo->x, blo.x);
+	lo->y = real_min(lo->y, blo.y);
+	lo->z = real_min(lo->z, blo.z);
+	hi->x = real_max(hi->x, bhi.x);
+	hi->y = real_max(hi->y, bhi.y);
+	hi->z = real_max(hi->z, bhi.z);
+}
+
 #endif

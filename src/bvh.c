@@ -94,8 +94,7 @@ static int sah_split(int first, int count, vec3 node_lo, vec3 node_hi, vec3 clo,
 				continue;
 			b = bin_by_scale(vec_get(o->centre, axis) - lo[axis], extent[axis], scale[axis]);
 			bin_count[axis][b]++;
-			box_grow(&bin_lo[axis][b], &bin_hi[axis][b], o->lo);
-			box_grow(&bin_lo[axis][b], &bin_hi[axis][b], o->hi);
+			box_grow_box(&bin_lo[axis][b], &bin_hi[axis][b], o->lo, o->hi);
 		}
 	}
 	/* Leaf cost: one intersection per object; a split costs one traversal step plus the
@@ -113,10 +112,8 @@ static int sah_split(int first, int count, vec3 node_lo, vec3 node_hi, vec3 clo,
 		n = 0;
 		for (i = BINS - 1; i > 0; i--) {
 			n += bin_count[axis][i];
-			if (bin_count[axis][i]) {
-				box_grow(&run_lo, &run_hi, bin_lo[axis][i]);
-				box_grow(&run_lo, &run_hi, bin_hi[axis][i]);
-			}
+			if (bin_count[axis][i])
+				box_grow_box(&run_lo, &run_hi, bin_lo[axis][i], bin_hi[axis][i]);
 			right_area[i] = half_area(run_lo, run_hi);
 			right_count[i] = n;
 		}
@@ -125,10 +122,8 @@ static int sah_split(int first, int count, vec3 node_lo, vec3 node_hi, vec3 clo,
 		for (i = 0; i < BINS - 1; i++) {
 			real cost;
 			n += bin_count[axis][i];
-			if (bin_count[axis][i]) {
-				box_grow(&run_lo, &run_hi, bin_lo[axis][i]);
-				box_grow(&run_lo, &run_hi, bin_hi[axis][i]);
-			}
+			if (bin_count[axis][i])
+				box_grow_box(&run_lo, &run_hi, bin_lo[axis][i], bin_hi[axis][i]);
 			if (n == 0 || right_count[i + 1] == 0)
 				continue;
 			/* Areas relative to the node's: the chance that a ray entering the node
@@ -180,8 +175,7 @@ static void build_node(bvh_tree *t, int node, int first, int count, int depth)
 	box_empty(&clo, &chi);
 	for (i = 0; i < count; i++) {
 		const build_item *o = &items[first + i];
-		box_grow(&n->bounds[0], &n->bounds[1], o->lo);
-		box_grow(&n->bounds[0], &n->bounds[1], o->hi);
+		box_grow_box(&n->bounds[0], &n->bounds[1], o->lo, o->hi);
 		box_grow(&clo, &chi, o->centre);
 	}
 	if (count > 1 && depth < MAX_BUILD_DEPTH) {
