@@ -1,248 +1,21 @@
-/* bvh.c - a bounding volume hierarchy over the scene's objects, in static arrays.
- * Built once after parsing with the binned surface area heuristic; traversed front to
- * back with a fixed stack, shrinking the search as hits are found.
+/* bvh.c - searches the bounding volume hierarchy (built by bvh_build.c): front to back
+ * with a fixed stack, shrinking the search as hits are found; shadow rays stop at the
+ * first opaque blocker.
  * See LICENSE for copyright and licence. */
 #include "bvh.h"
 
-#include "box.h"
 #include "intersect.h"
 
+/* SSE (every x86-64, and x86 built for it) tests the wide tree's four boxes at once;
+ * other targets take the plain C loop, with the same results. RT_NO_SIMD=1 forces it. */
+#if BVH_WIDE && defined(__SSE__) && !RT_NO_SIMD
+#include <xmmintrin.h>
+#define WIDE_SSE 1
+#else
+#define WIDE_SSE 0
+#endif
 
-#define BINS 16           /* SAH candidate planes per axis, minus one */
-#define MAX_LEAF 4        /* a leaf holds at most this many objects when it can be split */
-#define MAX_BUILD_DEPTH 60 /* deeper nodes become leaves; bounds the traversal stack */
-#define STACK_SIZE (MAX_BUILD_DEPTH + 2)
-
-RT_STATIC_ASSERT(node_count_fits, 2 * (long)RT_MAX_OBJECTS < 2147483647L);
-
-/* Build scratch: each bounded object's bounds and their centre, kept in the order of the
- * tree's index (partitioned with it), so that every pass over a node's objects reads
- * memory in order: reached through the index, the 1 M sphere build spent most of its 1.4 s
- * waiting for memory. */
-typedef struct {
-	vec3 lo, hi, centre;
-	int object;
-} build_item;
-static build_item items[RT_MAX_OBJECTS];
-
-
-
-
-/* The bin (0 .. BINS-1) of a centre at `offset` past the lowest centre, out of `extent`.
- * The comparison keeps a NaN or out-of-range quotient from reaching the int conversion. */
-static int bin_of(real offset, real extent)
-{
-	real b = real_mul(real_div(offset, extent), real_from_int(BINS));
-	return b >= REAL_C(0.0) ? (b < real_from_int(BINS) ? real_to_int(b) : BINS - 1) : 0;
-}
-
-/* bin_of by a product with scale = BINS / extent, where that cannot decide otherwise:
- * the product and the quotient differ by a few roundings, so only an offset within
- * BIN_SLACK of a bin's edge takes the quotient, and every bin is bin_of's (the same
- * tree, a division per object and axis fewer: the 1 M sphere build took 1.8 s). Fixed
- * point keeps its quotient: its product rounds differently. */
-#define BIN_SLACK REAL_C(0.00001)
-static int bin_by_scale(real offset, real extent, real scale)
-{
-	real b = real_mul(offset, scale);
-	if (!REAL_SATURATES && b >= REAL_C(0.0) && b < real_from_int(BINS)) {
-		int whole = real_to_int(b);
-		real part = b - real_from_int(whole);
-		if (part > BIN_SLACK && part < REAL_C(1.0) - BIN_SLACK)
-			return whole;
-	}
-	return bin_of(offset, extent);
-}
-
-static real2 half_area(vec3 lo, vec3 hi)
-{
-	vec3 d = vec_sub(hi, lo);
-	if (d.x < 0 || d.y < 0 || d.z < 0)
-		return 0;
-	return real_mul2(d.x, d.y) + real_mul2(d.y, d.z) + real_mul2(d.z, d.x);
-}
-
-/* Chooses the split of index[first .. first+count), whose centres lie in [clo, chi], with
- * the lowest SAH cost over BINS bins of centres per axis and partitions the objects by
- * it. Returns the number moved to the left, or 0 when a leaf is cheaper and small enough,
- * or when all centres coincide. */
-static int sah_split(int first, int count, vec3 node_lo, vec3 node_hi, vec3 clo,
-		     vec3 chi, int *axis_out)
-{
-	real2 node_area = half_area(node_lo, node_hi);
-	real best_cost, lo[3], extent[3], scale[3];
-	int bin_count[3][BINS];
-	vec3 bin_lo[3][BINS], bin_hi[3][BINS];
-	int best_axis = -1, best_plane = 0, axis, i, left;
-	for (axis = 0; axis < 3; axis++) {
-		lo[axis] = vec_get(clo, axis);
-		extent[axis] = vec_get(chi, axis) - lo[axis];
-		scale[axis] = extent[axis] > REAL_C(0.0) && !REAL_SATURATES
-				      ? real_div(real_from_int(BINS), extent[axis])
-				      : REAL_C(0.0);
-		for (i = 0; i < BINS; i++) {
-			bin_count[axis][i] = 0;
-			box_empty(&bin_lo[axis][i], &bin_hi[axis][i]);
-		}
-	}
-	/* One pass over the objects bins them on all three axes. */
-	for (i = 0; i < count; i++) {
-		const build_item *o = &items[first + i];
-		for (axis = 0; axis < 3; axis++) {
-			int b;
-			if (!(extent[axis] > REAL_C(0.0)))
-				continue;
-			b = bin_by_scale(vec_get(o->centre, axis) - lo[axis], extent[axis], scale[axis]);
-			bin_count[axis][b]++;
-			box_grow_box(&bin_lo[axis][b], &bin_hi[axis][b], o->lo, o->hi);
-		}
-	}
-	/* Leaf cost: one intersection per object; a split costs one traversal step plus the
-	 * children's objects weighted by the chance of entering each. */
-	best_cost = REAL_MAX;
-	for (axis = 0; axis < 3; axis++) {
-		vec3 run_lo, run_hi;
-		real2 right_area[BINS];
-		int right_count[BINS], n;
-		if (!(extent[axis] > REAL_C(0.0)))
-			continue;
-		/* Sweep from the right, then from the left, pricing each plane between bins.
-		 * An empty bin's box is inside out (+MAX..-MAX) and must not be grown by. */
-		box_empty(&run_lo, &run_hi);
-		n = 0;
-		for (i = BINS - 1; i > 0; i--) {
-			n += bin_count[axis][i];
-			if (bin_count[axis][i])
-				box_grow_box(&run_lo, &run_hi, bin_lo[axis][i], bin_hi[axis][i]);
-			right_area[i] = half_area(run_lo, run_hi);
-			right_count[i] = n;
-		}
-		box_empty(&run_lo, &run_hi);
-		n = 0;
-		for (i = 0; i < BINS - 1; i++) {
-			real cost;
-			n += bin_count[axis][i];
-			if (bin_count[axis][i])
-				box_grow_box(&run_lo, &run_hi, bin_lo[axis][i], bin_hi[axis][i]);
-			if (n == 0 || right_count[i + 1] == 0)
-				continue;
-			/* Areas relative to the node's: the chance that a ray entering the node
-			 * enters each child. */
-			cost = REAL_C(0.5) +
-			       real_mul(real2_ratio(half_area(run_lo, run_hi), node_area),
-					real_from_int(n)) +
-			       real_mul(real2_ratio(right_area[i + 1], node_area),
-					real_from_int(right_count[i + 1]));
-			if (cost < best_cost) {
-				best_cost = cost;
-				best_axis = axis;
-				best_plane = i;
-			}
-		}
-	}
-	/* Keep a leaf when that is cheaper, unless it would be too big. */
-	if (best_axis < 0 || (best_cost >= real_from_int(count) && count <= MAX_LEAF))
-		return 0;
-	/* Partition: objects whose centre falls in bins 0..best_plane go left. */
-	{
-		int j = first + count - 1;
-		i = first;
-		while (i <= j) {
-			int b = bin_by_scale(vec_get(items[i].centre, best_axis) - lo[best_axis],
-					     extent[best_axis], scale[best_axis]);
-			if (b <= best_plane) {
-				i++;
-			} else {
-				build_item swap = items[i];
-				items[i] = items[j];
-				items[j--] = swap;
-			}
-		}
-		left = i - first;
-	}
-	*axis_out = best_axis;
-	return left > 0 && left < count ? left : 0;
-}
-
-/* Fills node `node` for index[first .. first+count) and recurses into its children.
- * Recursion depth is at most MAX_BUILD_DEPTH. */
-static void build_node(bvh_tree *t, int node, int first, int count, int depth)
-{
-	bvh_node *n = &t->nodes[node];
-	int i, left = 0, axis = 0;
-	vec3 clo, chi; /* the bounds of the objects' centres */
-	box_empty(&n->bounds[0], &n->bounds[1]);
-	box_empty(&clo, &chi);
-	for (i = 0; i < count; i++) {
-		const build_item *o = &items[first + i];
-		box_grow_box(&n->bounds[0], &n->bounds[1], o->lo, o->hi);
-		box_grow(&clo, &chi, o->centre);
-	}
-	if (count > 1 && depth < MAX_BUILD_DEPTH) {
-		left = sah_split(first, count, n->bounds[0], n->bounds[1], clo, chi, &axis);
-		/* Too many objects for one leaf but no plane between their centres (all
-		 * centres equal): split the list in half. */
-		if (!left && count > MAX_LEAF) {
-			left = count / 2;
-			axis = 0;
-		}
-	}
-	if (!left) {
-		n->start = first;
-		n->count = (short)count;
-		n->axis = 0;
-		return;
-	}
-	n->start = t->node_count;
-	n->count = 0;
-	n->axis = (short)axis;
-	t->node_count += 2;
-	build_node(t, n->start, first, left, depth + 1);
-	build_node(t, n->start + 1, first + left, count - left, depth + 1);
-}
-
-void bvh_build(bvh_tree *t, const scene *s)
-{
-	static unsigned char bounded[RT_MAX_OBJECTS];
-	int i, next;
-	t->node_count = 0;
-	t->unbounded_count = 0;
-	if (s->object_count < RT_BVH_MIN_OBJECTS)
-		return;
-	for (i = 0; i < s->object_count; i++) {
-		vec3 lo, hi;
-		bounded[i] = shape_bounds(s, &s->objects[i], &lo, &hi) && vec_is_finite(lo) &&
-			     vec_is_finite(hi);
-		if (bounded[i]) {
-			/* Pad by the secondary-ray offset scale so rounding never loses a hit that
-			 * the object's own test would find. */
-			real pad = real_surface_offset(
-				real_max(REAL_C(1.0), real_max(vec_max_abs(lo), vec_max_abs(hi))), 1);
-			vec3 p = vec_make(pad, pad, pad);
-			build_item *item = &items[i];
-			item->lo = vec_sub(lo, p);
-			item->hi = vec_add(hi, p);
-			item->centre = vec_scale(vec_add(item->lo, item->hi), REAL_C(0.5));
-			item->object = i;
-		} else {
-			t->index[t->unbounded_count++] = i;
-		}
-	}
-	/* Unbounded objects first, then the bounded ones the tree is built over: item i
-	 * moves up to slot unbounded_count + (bounded objects before i), from the last down,
-	 * so that none is overwritten before it moves; the index takes the items' order when
-	 * the tree is done. */
-	next = s->object_count;
-	for (i = s->object_count - 1; i >= 0; i--)
-		if (bounded[i])
-			items[--next] = items[i];
-	if (next == s->object_count)
-		return;
-	t->node_count = 1;
-	build_node(t, 0, t->unbounded_count, s->object_count - t->unbounded_count, 0);
-	for (i = t->unbounded_count; i < s->object_count; i++)
-		t->index[i] = items[i].object;
-}
+#define STACK_SIZE (BVH_MAX_DEPTH + 2)
 
 /* A ray prepared for slab tests: 1/d per axis and, per axis, which box corner it meets
  * first. A zero component must mean an infinite slab, decided by the origin alone:
@@ -260,6 +33,21 @@ typedef struct {
 	dir3 dir;
 } slab_ray;
 
+#define BOX_SLACK (REAL_C(1.0) + REAL_C(16.0) * REAL_EPSILON)
+
+/* Is the slab interval [tnear, tfar] open, allowing for the rounding of its ends? Each
+ * end is off by a few roundings of itself: in floating point a few parts in 2^53
+ * (double) of the distance, and BOX_SLACK widens the exit by more; in Q16.16 the
+ * reciprocal 1/d (|d| <= 1) is off by half a step, 2^-17 of itself at most, and the
+ * product by half a step more, so the exit is widened by 2^-15 of itself and two steps.
+ * Without it a thin box far from the origin (a tile 0.1 wide at 10^30 in double, a tile
+ * at 3,000 in Q16.16) seems to be left before it is entered, and its hit is lost. */
+static inline int slab_interval_open(real tnear, real tfar)
+{
+	if (REAL_SATURATES)
+		return tnear <= real_add(tfar, real_add(real_fabs(tfar) / 32768, REAL_EPSILON * 2));
+	return tnear <= tfar * BOX_SLACK;
+}
 #define RECIPROCAL_LIMIT REAL_C(16384.0) /* 1/d for |d| >= 2^-14, well inside Q16.16 */
 
 /* Where the ray meets the plane `offset` past its origin along an axis of direction
@@ -282,13 +70,13 @@ static int box_hit_divided(const bvh_node *n, const slab_ray *r, real tmax, real
 		int near = axis == 0 ? r->near_x : axis == 1 ? r->near_y : r->near_z;
 		unit d = axis == 0 ? r->dir.x : axis == 1 ? r->dir.y : r->dir.z;
 		real o = vec_get(r->origin, axis);
-		real t0 = slab_distance(real_add(vec_get(n->bounds[near], axis), -o), d, 0);
-		real t1 = slab_distance(real_add(vec_get(n->bounds[!near], axis), -o), d, 1);
+		real t0 = slab_distance(real_add(bvh_bound(n, near, axis), -o), d, 0);
+		real t1 = slab_distance(real_add(bvh_bound(n, !near, axis), -o), d, 1);
 		tnear = t0 > tnear ? t0 : tnear;
 		tfar = t1 < tfar ? t1 : tfar;
 	}
 	*tenter = tnear;
-	return tnear <= tfar;
+	return slab_interval_open(tnear, tfar);
 }
 
 /* Does the ray enter node n's box before tmax? *tenter gets where. The comparisons are
@@ -302,12 +90,12 @@ static inline int box_hit(const bvh_node *n, const slab_ray *r, real tmax, real 
 		return box_hit_divided(n, r, tmax, tenter);
 	/* Saturating differences (real_add): a box of an object that reaches the edge of
 	 * fixed point's range, less a far origin, would overflow. */
-	x0 = real_mul(real_add(n->bounds[r->near_x].x, -r->origin.x), r->inv.x);
-	x1 = real_mul(real_add(n->bounds[!r->near_x].x, -r->origin.x), r->inv.x);
-	y0 = real_mul(real_add(n->bounds[r->near_y].y, -r->origin.y), r->inv.y);
-	y1 = real_mul(real_add(n->bounds[!r->near_y].y, -r->origin.y), r->inv.y);
-	z0 = real_mul(real_add(n->bounds[r->near_z].z, -r->origin.z), r->inv.z);
-	z1 = real_mul(real_add(n->bounds[!r->near_z].z, -r->origin.z), r->inv.z);
+	x0 = real_mul(real_add((real)n->bounds[r->near_x].x, -r->origin.x), r->inv.x);
+	x1 = real_mul(real_add((real)n->bounds[!r->near_x].x, -r->origin.x), r->inv.x);
+	y0 = real_mul(real_add((real)n->bounds[r->near_y].y, -r->origin.y), r->inv.y);
+	y1 = real_mul(real_add((real)n->bounds[!r->near_y].y, -r->origin.y), r->inv.y);
+	z0 = real_mul(real_add((real)n->bounds[r->near_z].z, -r->origin.z), r->inv.z);
+	z1 = real_mul(real_add((real)n->bounds[!r->near_z].z, -r->origin.z), r->inv.z);
 	tnear = x0 > tnear ? x0 : tnear;
 	tnear = y0 > tnear ? y0 : tnear;
 	tnear = z0 > tnear ? z0 : tnear;
@@ -315,8 +103,113 @@ static inline int box_hit(const bvh_node *n, const slab_ray *r, real tmax, real 
 	tfar = y1 < tfar ? y1 : tfar;
 	tfar = z1 < tfar ? z1 : tfar;
 	*tenter = tnear;
-	return tnear <= tfar;
+	return slab_interval_open(tnear, tfar);
 }
+
+#if BVH_WIDE
+/* A ray prepared for the wide tree's float slab tests, made so that a computed entry is
+ * never after the true one and a computed exit never before it (Ize, "Robust BVH ray
+ * traversal", gives the same argument): per axis the origin rounded to float twice, each
+ * way, and the near plane's distance taken from the copy that makes it smallest, the far
+ * plane's from the one that makes it largest; what the float subtraction, product and
+ * reciprocal round is relative to the distance, at most 4 2^-24, and the test allows
+ * WIDE_SLACK for it. Rays with an origin beyond WIDE_LIMIT or a direction component
+ * below 1 / WIDE_LIMIT (other than 0) are left to the binary tree: there the reciprocal
+ * would not be a float, or a product could lose its relative accuracy. */
+typedef struct {
+	float near_from[3], far_from[3]; /* the origin, rounded for each plane */
+	float inv[3];  /* 1 / d: +-infinity for a zero component, by its sign */
+	int near[3];   /* the box row of the plane entered first: 2 axis + (d < 0) */
+#if WIDE_SSE
+	__m128 near_from4[3], far_from4[3], inv4[3]; /* the same, in each of four lanes */
+#endif
+} wide_ray;
+
+#define WIDE_LIMIT REAL_C(1.2676506002282294e30) /* 2^100 */
+#define WIDE_SLACK (1.0f + 1.0f / 1048576.0f)     /* 1 + 2^-20: covers 8 2^-24 */
+
+static int wide_ray_make(wide_ray *w, const ray *r)
+{
+	int axis;
+	for (axis = 0; axis < 3; axis++) {
+		real o = vec_get(r->origin, axis);
+		unit d = axis == 0 ? r->dir.x : axis == 1 ? r->dir.y : r->dir.z;
+		float fd = (float)d, down, up;
+		if (!(real_fabs(o) < WIDE_LIMIT) ||
+		    (d != UNIT_C(0.0) && !(unit_fabs(d) > UNIT_C(1.0) / WIDE_LIMIT)))
+			return 0;
+		down = float_outward(o, 0);
+		up = float_outward(o, 1);
+		w->inv[axis] = 1.0f / fd; /* a zero keeps its sign: 1 / -0 is -infinity */
+		w->near[axis] = 2 * axis + (w->inv[axis] < 0.0f);
+		/* Entering through the lower plane the origin's upper copy gives the smaller
+		 * distance, and the other way round. */
+		w->near_from[axis] = w->inv[axis] < 0.0f ? down : up;
+		w->far_from[axis] = w->inv[axis] < 0.0f ? up : down;
+#if WIDE_SSE
+		w->near_from4[axis] = _mm_set1_ps(w->near_from[axis]);
+		w->far_from4[axis] = _mm_set1_ps(w->far_from[axis]);
+		w->inv4[axis] = _mm_set1_ps(w->inv[axis]);
+#endif
+	}
+	return 1;
+}
+
+/* tmax as a float, infinity beyond float's range: rounded to the nearest, which
+ * WIDE_SLACK covers. */
+static float wide_limit(real tmax)
+{
+	return tmax < (real)FLT_MAX ? (float)tmax : INFINITY;
+}
+
+/* Which of node n's four boxes the ray enters before tmax: bit i for lane i, and
+ * enter[i] where, never after the true entry. A NaN distance (0 times infinity: a ray
+ * lying in a slab plane) fails its comparison and leaves the interval as it was. */
+static inline int wide_hit(const bvh_wide_node *n, const wide_ray *r, float tmax,
+			   float enter[4])
+{
+#if WIDE_SSE
+	/* The same operations, four lanes at once: max_ps(a, b) is a > b ? a : b, lane by
+	 * lane, NaN included, so both paths give the same bits. */
+	__m128 tnear = _mm_setzero_ps(), tfar = _mm_set1_ps(tmax);
+	int axis;
+	for (axis = 0; axis < 3; axis++) {
+		__m128 t0 = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(n->box[r->near[axis]]),
+						  r->near_from4[axis]),
+				       r->inv4[axis]);
+		__m128 t1 = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(n->box[r->near[axis] ^ 1]),
+						  r->far_from4[axis]),
+				       r->inv4[axis]);
+		tnear = _mm_max_ps(t0, tnear);
+		tfar = _mm_min_ps(t1, tfar);
+	}
+	_mm_storeu_ps(enter, tnear);
+	return _mm_movemask_ps(_mm_cmple_ps(
+		tnear, _mm_add_ps(_mm_mul_ps(tfar, _mm_set1_ps(WIDE_SLACK)), _mm_set1_ps(FLT_MIN))));
+#else
+	int i, axis, mask = 0;
+	for (i = 0; i < 4; i++) {
+		float tnear = 0.0f, tfar = tmax;
+		for (axis = 0; axis < 3; axis++) {
+			float t0 = (n->box[r->near[axis]][i] - r->near_from[axis]) * r->inv[axis];
+			float t1 = (n->box[r->near[axis] ^ 1][i] - r->far_from[axis]) * r->inv[axis];
+			tnear = t0 > tnear ? t0 : tnear;
+			tfar = t1 < tfar ? t1 : tfar;
+		}
+		enter[i] = tnear;
+		/* FLT_MIN: below it a product is subnormal and its error absolute. */
+		mask |= (tnear <= tfar * WIDE_SLACK + FLT_MIN) << i;
+	}
+	return mask;
+#endif
+}
+
+/* The lanes set in a mask of four, in order, and how many. */
+static const signed char lanes_of[16][4] = {
+	{0}, {0}, {1}, {0, 1}, {2}, {0, 2}, {1, 2}, {0, 1, 2}, {3}, {0, 3}, {1, 3}, {0, 1, 3},
+	{2, 3}, {0, 2, 3}, {1, 2, 3}, {0, 1, 2, 3}};
+static const signed char lane_count[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
+#endif
 
 /* The two queries share one traversal; `shadow` is a constant at each call, so the
  * compiler makes two specialised copies. Nearest: the closest hit, shrinking tmax as hits
@@ -332,6 +225,9 @@ static inline real traverse(const scene *s, const bvh_tree *t, const ray *r, int
 	int top = 0, i;
 	real pass = REAL_C(1.0), enter, enter0, enter1;
 	slab_ray sr;
+#if BVH_WIDE
+	wide_ray wr;
+#endif
 
 	*found = shadow ? -1 : 0;
 	/* Visits object `o`: returns 1 when the search is over (an opaque shadow blocker). */
@@ -358,6 +254,54 @@ static inline real traverse(const scene *s, const bvh_tree *t, const ray *r, int
 
 	for (i = 0; i < t->unbounded_count; i++)
 		VISIT(t->index[i]);
+#if BVH_WIDE
+	if (t->node_count && wide_ray_make(&wr, r)) {
+		/* Each node pops one entry and pushes at most four: three more per level. */
+		struct {
+			int child, count; /* a wide node (count 0) or a leaf's objects */
+			float enter;
+		} wide_stack[3 * (BVH_MAX_DEPTH + 1) + 2];
+		float limit = wide_limit(tmax);
+		wide_stack[0].child = 0;
+		wide_stack[0].count = 0;
+		wide_stack[0].enter = 0.0f;
+		top = 1;
+		while (top > 0) {
+			const bvh_wide_node *node;
+			float lane_enter[4];
+			int order[4], k, mask;
+			top--;
+			if (!shadow && (real)wide_stack[top].enter > tmax)
+				continue;
+			if (wide_stack[top].count) {
+				int first = wide_stack[top].child, last = first + wide_stack[top].count;
+				for (i = first; i < last; i++)
+					VISIT(t->index[i]);
+				if (!shadow)
+					limit = wide_limit(tmax);
+				continue;
+			}
+			node = &t->wide[wide_stack[top].child];
+			mask = wide_hit(node, &wr, limit, lane_enter);
+			/* The lanes entered, farthest first, so that the nearest is searched
+			 * first (a shadow ray takes them as they come). */
+			k = lane_count[mask];
+			for (i = 0; i < k; i++) {
+				int lane = lanes_of[mask][i], j;
+				for (j = i; !shadow && j > 0 && lane_enter[order[j - 1]] < lane_enter[lane]; j--)
+					order[j] = order[j - 1];
+				order[j] = lane;
+			}
+			for (i = 0; i < k; i++) {
+				wide_stack[top + i].child = node->child[order[i]];
+				wide_stack[top + i].count = node->count[order[i]];
+				wide_stack[top + i].enter = lane_enter[order[i]];
+			}
+			top += k;
+		}
+		return pass;
+	}
+#endif
 	sr.origin = r->origin;
 	sr.inv = vec_make(real_div_unit(REAL_C(1.0), r->dir.x), real_div_unit(REAL_C(1.0), r->dir.y),
 			  real_div_unit(REAL_C(1.0), r->dir.z));

@@ -9,13 +9,83 @@
 
 #include "shape.h"
 
-/* A node of the bounding volume hierarchy (bvh.c). */
+#define BVH_MAX_DEPTH 60 /* deeper nodes become leaves; bounds the traversal stacks */
+
+/* Floating-point types search a four-wide tree with float boxes; fixed point, which
+ * uses no floating point at all, searches the binary tree it is collapsed from. */
+#define BVH_WIDE (!REAL_FLOAT_FREE)
+#define BVH_WIDE_NODES (BVH_WIDE ? RT_MAX_OBJECTS : 1)
+
+#if BVH_WIDE
+#include <float.h>
+#include <math.h>
+#include <stdint.h>
+#include <string.h>
+
+/* The next float after f towards +infinity (up) or -infinity, f finite: by its bits, as
+ * IEEE floats are ordered like their magnitudes' bit patterns (no libm call). */
+static inline float float_step(float f, int up)
+{
+	uint32_t bits;
+	if (f == 0.0f)
+		return up ? FLT_MIN * FLT_EPSILON : -FLT_MIN * FLT_EPSILON; /* the least subnormal */
+	memcpy(&bits, &f, sizeof bits);
+	bits = (f > 0.0f) == (up != 0) ? bits + 1 : bits - 1;
+	memcpy(&f, &bits, sizeof f);
+	return f;
+}
+
+/* x rounded to float towards +infinity (up) or -infinity: a bound on x. Beyond float's
+ * range the infinity on x's side or the largest float (converting it is undefined). */
+static inline float float_outward(real x, int up)
+{
+	float f;
+	if (x > (real)FLT_MAX)
+		return up ? INFINITY : FLT_MAX;
+	if (x < (real)-FLT_MAX)
+		return up ? -FLT_MAX : -INFINITY;
+	f = (float)x;
+	return (up ? (real)f < x : (real)f > x) ? float_step(f, up) : f;
+}
+#endif
+
+/* A corner of a binary node's box: in floating-point types rounded outwards to float
+ * (half the memory of double, a third of long double's: a million objects' tree stays
+ * small), which the wide tree's lanes take as they are. */
+#if BVH_WIDE
 typedef struct {
-	vec3 bounds[2]; /* lower and upper corner */
+	float x, y, z;
+} bvh_point;
+#else
+typedef vec3 bvh_point;
+#endif
+
+/* A node of the binary tree (bvh_build.c). */
+typedef struct {
+	bvh_point bounds[2]; /* lower and upper corner */
 	int start;   /* leaf: first slot in scene.bvh_index; inner: left child (right = start+1) */
 	short count; /* leaf: number of objects; 0 marks an inner node */
 	short axis;  /* inner: the split axis, for front-to-back traversal */
 } bvh_node;
+
+/* Corner `side` (0 lower, 1 upper) of node n's box on an axis. */
+static inline real bvh_bound(const bvh_node *n, int side, int axis)
+{
+	const bvh_point *p = &n->bounds[side];
+	return axis == 0 ? (real)p->x : axis == 1 ? (real)p->y : (real)p->z;
+}
+
+/* A node of the four-wide tree: the binary tree with every node's children replaced
+ * by grandchildren until it has four (or only leaves left). Its boxes are the binary
+ * nodes' rounded outwards to float, so that a box may be too big but never too small;
+ * they are stored by row, box[2 axis + side][lane] (side 0 the lower bound, 1 the upper),
+ * so that a row is one load of four lanes. */
+typedef struct {
+	float box[6][4];
+	int child[4]; /* inner lane: a wide node; leaf lane: the first slot in the index */
+	int count[4]; /* leaf lane: number of objects; 0: an inner lane, or empty (child -1) */
+} bvh_wide_node;
+
 
 typedef struct {
 	/* node_count 0 means no hierarchy (small scenes test every object). index[0 ..
@@ -24,6 +94,8 @@ typedef struct {
 	int node_count, unbounded_count;
 	bvh_node nodes[2 * RT_MAX_OBJECTS];
 	int index[RT_MAX_OBJECTS];
+	int wide_count; /* BVH_WIDE: the wide tree, its root at wide[0], when node_count > 0 */
+	bvh_wide_node wide[BVH_WIDE_NODES];
 } bvh_tree;
 
 /* Builds the hierarchy of s into t; scenes smaller than RT_BVH_MIN_OBJECTS get none

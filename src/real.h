@@ -36,6 +36,7 @@ typedef float real;
 #define REAL_NAME "float"
 #define REAL_C(x) ((float)(x))
 #define REAL_MAX FLT_MAX
+#define REAL_EPSILON FLT_EPSILON /* 2^-23: the gap between 1 and the next value */
 #define real_sqrt sqrtf
 #define real_fabs fabsf
 #define real_pow powf
@@ -50,6 +51,7 @@ typedef double real;
 #define REAL_NAME "double"
 #define REAL_C(x) ((double)(x))
 #define REAL_MAX DBL_MAX
+#define REAL_EPSILON DBL_EPSILON
 #define real_sqrt sqrt
 #define real_fabs fabs
 #define real_pow pow
@@ -63,6 +65,7 @@ typedef long double real;
 #define REAL_NAME "long double"
 #define REAL_C(x) ((long double)(x))
 #define REAL_MAX LDBL_MAX
+#define REAL_EPSILON LDBL_EPSILON
 #define real_sqrt sqrtl
 #define real_fabs fabsl
 #define real_pow powl
@@ -85,6 +88,7 @@ typedef int64_t real2; /* Q32.32: squares and products of lengths */
 #define REAL_FLOAT_FREE 1 /* no floating point at all: code that needs it is left out */
 #define REAL_C(x) ((real)((x) * 65536.0 + ((x) < 0 ? -0.5 : 0.5)))
 #define REAL_MAX ((real)0x7FFFFFFF)
+#define REAL_EPSILON ((real)1) /* one step, 2^-16 */
 #define real_mul(a, b) fixed_mul((a), (b))
 #define real_add(a, b) fixed_add((a), (b))
 #define real_dot3(ax, ay, az, bx, by, bz) fixed_dot3((ax), (ay), (az), (bx), (by), (bz))

@@ -65,11 +65,110 @@ static void test_axis_rays(void)
 	CHECK_INT(misses, 0);
 	CHECK_INT(mismatches, 0);
 }
+/* Random objects: spheres and axis-aligned tiles (boxes of zero thickness) at
+ * coordinates that float cannot hold exactly (tenths), at scales from 1/100 to 100
+ * (Q16.16: 1/3 to 3, the ratio of extent to feature it can render). */
+static size_t random_objects(char *text, size_t at, size_t size, int count)
+{
+	int i;
+	for (i = 0; i < count && at < size; i++) {
+		double scale = i % 3 == 1 ? 1.0 : REAL_FIXED ? (i % 3 ? 3.0 : 0.3) : (i % 3 ? 100.0 : 0.01);
+		double x = (double)(long)test_random_range(-300.0, 300.0) / 10.0 * scale;
+		double y = (double)(long)test_random_range(-300.0, 300.0) / 10.0 * scale;
+		double z = (double)(long)test_random_range(-300.0, 300.0) / 10.0 * scale;
+		double e = 0.1 * scale;
+		int n = i % 2 ? snprintf(text + at, size - at, "s %.17g %.17g %.17g %.17g\n", x, y, z, e)
+			      : snprintf(text + at, size - at,
+					 "p 4\n%.17g %.17g %.17g\n%.17g %.17g %.17g\n"
+					 "%.17g %.17g %.17g\n%.17g %.17g %.17g\n",
+					 x, y, z, x + e, y, z, x + e, y, z + e, x, y, z + e);
+		at = n > 0 ? at + (size_t)n : at;
+	}
+	return at;
+}
+
+/* A component made hard for a slab test: kept, 0, -0, or tiny (below 2^-100 too, which
+ * the wide tree leaves to the binary one). */
+static double hard_component(double c, int how)
+{
+	static const double tiny[] = {0.0, -0.0, 1e-7, -1e-20, 1e-35, -1e-300};
+	return how < 6 ? tiny[how] : c;
+}
+
+/* Rays aimed at the objects' box corners, edges and faces (where a box too small by a
+ * rounding would lose the hit), from inside and outside the scene, from far away, with
+ * components zeroed or made tiny: through the hierarchy they find what the object-by-
+ * object search finds, at the same distance. */
+static void test_hard_rays(void)
+{
+	static char text[1 << 16];
+	size_t at;
+	int i, rays = 0, hits = 0, mismatches = 0;
+	const accel *tree, *plain;
+	test_seed(15);
+	at = (size_t)snprintf(text, sizeof text,
+			      "v\nfrom 0 -50 0\nat 0 0 0\nup 0 0 1\nangle 30\nhither 1\n"
+			      "resolution 8 8\nl 0 -40 10\nf 1 1 1 1 0 0 0 1\n");
+	at = random_objects(text, at, sizeof text, 400);
+	if (!CHECK(test_parse_buffer(&s, "hard.nff", text, NULL, NULL)))
+		return;
+	CHECK_INT(s.object_count, 400);
+	tree = test_accel(&s, 1);
+	plain = test_accel(&s, 0);
+	if (!CHECK(tree->tree.node_count > 0))
+		return;
+	for (i = 0; i < 20000; i++) {
+		const object *o = &s.objects[(int)test_random_range(0.0, 399.99)];
+		vec3 lo, hi, target, from, d;
+		ray r;
+		hit through_tree, one_by_one;
+		int found_tree, found_each, axis;
+		if (!shape_bounds(&s, o, &lo, &hi))
+			continue;
+		/* A corner, an edge's or a face's middle, or a point inside. */
+		target = vec_make(i % 3 ? lo.x : vec_get(vec_scale(vec_add(lo, hi), REAL_C(0.5)), 0),
+				  i % 5 ? hi.y : vec_get(vec_scale(vec_add(lo, hi), REAL_C(0.5)), 1),
+				  i % 7 ? lo.z : hi.z);
+		/* From a random point, a point on the same face (a ray in its plane), or far
+		 * beyond the scene (floating point: past 2^100). */
+		from = vec_make(test_scaled(test_random_range(-3000.0, 3000.0), 0),
+				test_scaled(test_random_range(-3000.0, 3000.0), 0),
+				test_scaled(test_random_range(-3000.0, 3000.0), 0));
+		if (i % 4 == 1)
+			from.x = target.x;
+		if (!REAL_FIXED && i % 11 == 3)
+			from = vec_scale(from, test_real(1e29));
+		d = vec_sub(target, from);
+		for (axis = 0; axis < 3; axis++) {
+			int how = (int)test_random_range(0.0, 30.0);
+			double c = hard_component(test_double(vec_get(d, axis)), how);
+			if (axis == 0)
+				d.x = test_scaled(c, 0);
+			else if (axis == 1)
+				d.y = test_scaled(c, 0);
+			else
+				d.z = test_scaled(c, 0);
+		}
+		if (vec_max_abs(d) == REAL_C(0.0))
+			continue;
+		r.origin = from;
+		r.dir = dir_normalize(d);
+		found_tree = scene_intersect(tree, &r, REAL_MAX, &through_tree);
+		found_each = scene_intersect(plain, &r, REAL_MAX, &one_by_one);
+		rays++;
+		hits += found_each;
+		mismatches += found_tree != found_each || (found_each && through_tree.t != one_by_one.t);
+	}
+	CHECK(rays > 15000);
+	CHECK(hits > rays / 10); /* on the tiles, the boxes' corners and edges are met */
+	CHECK_INT(mismatches, 0);
+}
 #endif
 
 void suite_bvh(void)
 {
 #if RT_USE_BVH
 	test_axis_rays();
+	test_hard_rays();
 #endif
 }
