@@ -79,6 +79,14 @@
 #define RT_COLOUR_PIPELINES 1
 #endif
 
+/* Runs of a big polygon's edges skipped at once by the inside test (their box on one
+ * side of the ray's plane, scene.h); 0 leaves the boxes and their pool out (the MCU's
+ * polygons are small). */
+#ifndef RT_POLYGON_RUNS
+#define RT_POLYGON_RUNS 1
+#endif
+#define RT_POLYGON_RUN 16 /* edges in a run */
+
 /* The ANSI colour previews; 0 leaves them out (ASCII only) where flash is short. */
 #ifndef RT_PREVIEW_COLOR
 #define RT_PREVIEW_COLOR 1

@@ -123,6 +123,11 @@ typedef struct {
 	/* Patches only (one unused slot where RT_SHAPE_PATCH leaves them out): */
 	dir3 normals[RT_PATCH_VERTICES]; /* each vertex's shading normal */
 	halfspace planes[RT_MAX_PLANES];
+#if RT_POLYGON_RUNS
+	/* Box k bounds pool vertices [k R - 1, (k + 1) R), R = RT_POLYGON_RUN, when one
+	 * polygon holds them all (polygon_init): the ends of R edges. */
+	vec3 run_lo[RT_MAX_VERTICES / RT_POLYGON_RUN + 1], run_hi[RT_MAX_VERTICES / RT_POLYGON_RUN + 1];
+#endif
 } scene;
 
 /* Clears a scene to NFF's defaults (black background, no ambient, default depth). */
