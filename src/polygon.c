@@ -74,46 +74,62 @@ static int run_one_side(vec3 lo, vec3 hi, const ray_frame *f, int z)
 static inline int crossings(const vec3 *vertices, int count, const ray_frame *f, int z,
 			    const scene *s, int first)
 {
-	int inside = 0, i;
+	int inside = 0, i = 0, stop;
 	vec3 a = frame_axes(vertices[count - 1], z);
 	real av = real_cross_unit(f->dz, a.y, f->dy, a.z) - f->v_origin;
-	for (i = 0; i < count; i++) {
-		vec3 b;
-		real bv;
+	do {
 #if RT_POLYGON_RUNS
-		/* A run's box holds the ends of the edges into vertices i .. i + RUN - 1. */
-		if (s && (first + i) % RT_POLYGON_RUN == 0 && i > 0 && i + RT_POLYGON_RUN <= count &&
-		    run_one_side(s->run_lo[(first + i) / RT_POLYGON_RUN],
-				 s->run_hi[(first + i) / RT_POLYGON_RUN], f, z)) {
-			i += RT_POLYGON_RUN - 1;
-			a = frame_axes(vertices[i], z);
-			av = real_cross_unit(f->dz, a.y, f->dy, a.z) - f->v_origin;
-			continue;
+		/* At a run's start (not the first vertex: the edge into it starts at the
+		 * last), pass over each run whose box holds the ends of the edges into
+		 * vertices i .. i + RUN - 1 and lies on one side. */
+		if (s && i > 0 && (first + i) % RT_POLYGON_RUN == 0) {
+			int passed = 0;
+			while (i + RT_POLYGON_RUN <= count &&
+			       run_one_side(s->run_lo[(first + i) / RT_POLYGON_RUN],
+					    s->run_hi[(first + i) / RT_POLYGON_RUN], f, z)) {
+				i += RT_POLYGON_RUN;
+				passed = 1;
+			}
+			if (passed) {
+				a = frame_axes(vertices[i - 1], z);
+				av = real_cross_unit(f->dz, a.y, f->dy, a.z) - f->v_origin;
+			}
 		}
+		/* Then vertex by vertex up to the next run's start. */
+		stop = s ? i + RT_POLYGON_RUN - (first + i) % RT_POLYGON_RUN : count;
+		stop = stop < count ? stop : count;
 #else
 		(void)s;
 		(void)first;
+		stop = count;
 #endif
-		b = frame_axes(vertices[i], z);
-		bv = real_cross_unit(f->dz, b.y, f->dy, b.z) - f->v_origin;
-		/* Crossings (Haines, Graphics Gems IV) of the +u ray from (0, 0), half-open in
-		 * v: an edge counts when its ends lie on different sides of v = 0, an end on
-		 * it counting as above. Most edges stop here, before their u is needed. */
-		if ((av >= 0) != (bv >= 0)) {
-			real au = real_cross_unit(f->dz, a.x - f->origin.x, f->dx, a.z - f->origin.z);
-			real bu = real_cross_unit(f->dz, b.x - f->origin.x, f->dx, b.z - f->origin.z);
-			/* Canonical order (by v): both neighbours of an edge test the same
-			 * endpoints in the same order. The edge meets v = 0 at u >= 0 when
-			 * cross(lo, hi) >= 0 (hi.v > lo.v), decided exactly: each edge's answer
-			 * is then that of the exact geometry of the projected vertices, so
-			 * neighbours tile the frame with no gap and no overlap, and a ray through
-			 * a shared edge or vertex is inside exactly one of them. */
-			if (av < bv ? real_products_ge(au, bv, av, bu) : real_products_ge(bu, av, bv, au))
-				inside = !inside;
+		for (; i < stop; i++) {
+			vec3 b = frame_axes(vertices[i], z);
+			real bv = real_cross_unit(f->dz, b.y, f->dy, b.z) - f->v_origin;
+			/* Crossings (Haines, Graphics Gems IV) of the +u ray from (0, 0),
+			 * half-open in v: an edge counts when its ends lie on different sides
+			 * of v = 0, an end on it counting as above. Most edges stop here,
+			 * before their u is needed. */
+			if ((av >= 0) != (bv >= 0)) {
+				real au = real_cross_unit(f->dz, a.x - f->origin.x, f->dx,
+							  a.z - f->origin.z);
+				real bu = real_cross_unit(f->dz, b.x - f->origin.x, f->dx,
+							  b.z - f->origin.z);
+				/* Canonical order (by v): both neighbours of an edge test the
+				 * same endpoints in the same order. The edge meets v = 0 at
+				 * u >= 0 when cross(lo, hi) >= 0 (hi.v > lo.v), decided
+				 * exactly: each edge's answer is then that of the exact
+				 * geometry of the projected vertices, so neighbours tile the
+				 * frame with no gap and no overlap, and a ray through a shared
+				 * edge or vertex is inside exactly one of them. */
+				if (av < bv ? real_products_ge(au, bv, av, bu)
+					    : real_products_ge(bu, av, bv, au))
+					inside = !inside;
+			}
+			a = b;
+			av = bv;
 		}
-		a = b;
-		av = bv;
-	}
+	} while (RT_POLYGON_RUNS && i < count); /* count >= 1: one pass without runs */
 	return inside;
 }
 
