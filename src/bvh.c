@@ -205,10 +205,10 @@ static inline int wide_hit(const bvh_wide_node *n, const wide_ray *r, float tmax
 }
 
 /* The lanes set in a mask of four, in order, and how many. */
-static const signed char lanes_of[16][4] = {
+static const unsigned char lanes_of[16][4] = {
 	{0}, {0}, {1}, {0, 1}, {2}, {0, 2}, {1, 2}, {0, 1, 2}, {3}, {0, 3}, {1, 3}, {0, 1, 3},
 	{2, 3}, {0, 2, 3}, {1, 2, 3}, {0, 1, 2, 3}};
-static const signed char lane_count[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
+static const unsigned char lane_count[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
 #endif
 
 /* The two queries share one traversal; `shadow` is a constant at each call, so the
@@ -256,48 +256,73 @@ static inline real traverse(const scene *s, const bvh_tree *t, const ray *r, int
 		VISIT(t->index[i]);
 #if BVH_WIDE
 	if (t->node_count && wide_ray_make(&wr, r)) {
-		/* Each node pops one entry and pushes at most four: three more per level. */
+		/* Each node pushes at most three entries (its fourth lane is searched at once). */
 		struct {
 			int child, count; /* a wide node (count 0) or a leaf's objects */
 			float enter;
 		} wide_stack[3 * (BVH_MAX_DEPTH + 1) + 2];
 		float limit = wide_limit(tmax);
-		wide_stack[0].child = 0;
+		int current = -1; /* the wide node to search next; -1: take one from the stack */
+		wide_stack[0].child = 0; /* the root */
 		wide_stack[0].count = 0;
 		wide_stack[0].enter = 0.0f;
 		top = 1;
-		while (top > 0) {
+		for (;;) {
 			const bvh_wide_node *node;
 			float lane_enter[4];
-			int order[4], k, mask;
-			top--;
-			if (!shadow && (real)wide_stack[top].enter > tmax)
-				continue;
-			if (wide_stack[top].count) {
-				int first = wide_stack[top].child, last = first + wide_stack[top].count;
-				for (i = first; i < last; i++)
-					VISIT(t->index[i]);
-				if (!shadow)
-					limit = wide_limit(tmax);
-				continue;
+			int order[4] = {0, 0, 0, 0}, k, mask, near;
+			if (current < 0) {
+				if (top == 0)
+					break;
+				top--;
+				/* A nearer hit found since this entry was pushed may make it
+				 * pointless. */
+				if (!shadow && (real)wide_stack[top].enter > tmax)
+					continue;
+				if (wide_stack[top].count) {
+					int first = wide_stack[top].child;
+					int last = first + wide_stack[top].count;
+					for (i = first; i < last; i++)
+						VISIT(t->index[i]);
+					if (!shadow)
+						limit = wide_limit(tmax);
+					continue;
+				}
+				current = wide_stack[top].child;
 			}
-			node = &t->wide[wide_stack[top].child];
+			node = &t->wide[current];
 			mask = wide_hit(node, &wr, limit, lane_enter);
-			/* The lanes entered, farthest first, so that the nearest is searched
-			 * first (a shadow ray takes them as they come). */
 			k = lane_count[mask];
-			for (i = 0; i < k; i++) {
-				int lane = lanes_of[mask][i], j;
-				for (j = i; !shadow && j > 0 && lane_enter[order[j - 1]] < lane_enter[lane]; j--)
+			current = -1;
+			if (!k)
+				continue;
+			/* The lanes entered, farthest first (a shadow ray takes them as they
+			 * come): all but the nearest wait on the stack, the nearest is searched
+			 * now. */
+			for (i = 0; i < k; i++)
+				order[i] = lanes_of[mask][i];
+			for (i = 1; !shadow && i < k; i++) {
+				int lane = order[i], j;
+				for (j = i; j > 0 && lane_enter[order[j - 1]] < lane_enter[lane]; j--)
 					order[j] = order[j - 1];
 				order[j] = lane;
 			}
-			for (i = 0; i < k; i++) {
+			for (i = 0; i < k - 1; i++) {
 				wide_stack[top + i].child = node->child[order[i]];
 				wide_stack[top + i].count = node->count[order[i]];
 				wide_stack[top + i].enter = lane_enter[order[i]];
 			}
-			top += k;
+			top += k - 1;
+			near = order[k - 1];
+			if (!node->count[near]) {
+				current = node->child[near];
+			} else {
+				int first = node->child[near], last = first + node->count[near];
+				for (i = first; i < last; i++)
+					VISIT(t->index[i]);
+				if (!shadow)
+					limit = wide_limit(tmax);
+			}
 		}
 		return pass;
 	}
