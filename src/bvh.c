@@ -245,6 +245,18 @@ static inline real traverse(const scene *s, const bvh_tree *t, const ray *r, int
 				}                                                             \
 				pass = real_mul(pass, kt_);                                   \
 			}                                                                     \
+		} else if (BVH_WIDE && *found && visit_ < h->object) {                        \
+			/* A hit at the same distance as the nearest so far goes to the lower  \
+			 * index, as in the search object by object: coincident surfaces      \
+			 * then look the same whatever order the tree meets them in. */        \
+			hit tie_;                                                             \
+			if (object_intersect(s, visit_, r, REAL_C(0.0),                       \
+					     tmax + tmax * REAL_EPSILON, &tie_) &&            \
+			    tie_.t <= tmax) {                                                 \
+				*h = tie_;                                                    \
+				tmax = h->t;                                                  \
+				h->object = visit_;                                           \
+			}                                                                     \
 		} else if (object_intersect(s, visit_, r, REAL_C(0.0), tmax, h)) {           \
 			tmax = h->t;                                                          \
 			h->object = visit_;                                                   \
@@ -276,8 +288,9 @@ static inline real traverse(const scene *s, const bvh_tree *t, const ray *r, int
 					break;
 				top--;
 				/* A nearer hit found since this entry was pushed may make it
-				 * pointless. */
-				if (!shadow && (real)wide_stack[top].enter > tmax)
+				 * pointless; the entry may be computed a few roundings late (the
+				 * box of a patch met at the very distance of the nearest hit). */
+				if (!shadow && (real)wide_stack[top].enter > tmax * (real)WIDE_SLACK)
 					continue;
 				if (wide_stack[top].count) {
 					int first = wide_stack[top].child;
@@ -346,7 +359,7 @@ static inline real traverse(const scene *s, const bvh_tree *t, const ray *r, int
 		const bvh_node *n;
 		top--;
 		/* A nearer hit found since this node was pushed may make it pointless. */
-		if (!shadow && stack[top].enter > tmax)
+		if (!shadow && stack[top].enter > (REAL_SATURATES ? tmax : tmax * BOX_SLACK))
 			continue;
 		n = &t->nodes[stack[top].node];
 		if (n->count) {
