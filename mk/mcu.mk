@@ -20,7 +20,7 @@ MCU_CAPACITIES = -DRT_MAX_OBJECTS=24 -DRT_MAX_LIGHTS=4 -DRT_MAX_MATERIALS=8 \
 	-DRT_MAX_WIDTH=160 -DRT_MAX_HEIGHT=160 -DRT_MAX_SCENE_WIDTH=8192 -DRT_MAX_SCENE_HEIGHT=8192 \
 	-DRT_MAX_MEDIA=4 -DRT_CORNER_SAMPLING=0 -DRT_SHAPE_CONE=0 -DRT_SHAPE_PATCH=0 \
 	-DRT_PREVIEW_COLOR=0 -DRT_COLOUR_PIPELINES=0
-MCU_DEFINES = -DRT_REAL_FIXED -DRT_USE_BVH=0 -DRT_POLYGON_RUNS=0 $(MCU_CAPACITIES)
+MCU_DEFINES = -DRT_REAL_FIXED -DRT_USE_BVH=0 -DRT_POLYGON_RUNS=0 -DRT_COLOUR_STEPS=256 $(MCU_CAPACITIES)
 # -fsigned-char: plain char as on the x86-64 host, so both builds read bytes alike.
 # --param max-completely-peel-times=1: loops of a few passes (the parser's over three
 # axes, in 64-bit arithmetic) stay loops; unrolled they cost 184 bytes of M0 flash, and

@@ -52,11 +52,12 @@ vec3 colour_scene_to_linear(vec3 colour)
 
 /* Linear value at which each 8-bit code starts: decode((code - 0.5) / 255), computed once
  * in the build's own type, so that code -> linear -> code returns the same code; and for
- * each j < 256 the largest code whose threshold is at most j / 256 (the thresholds times
- * 256 are exact in every type). Encoding then starts from the code of linear's 1/256
- * and steps up, without a power per pixel: a few steps, but near black, where the curve
- * is steep (up to 13 codes in the first 1/256). */
-#define SRGB_STEPS 256 /* buckets of linear values in [0, 1) */
+ * each j < SRGB_STEPS the largest code whose threshold is at most j / SRGB_STEPS (the
+ * thresholds times a power of two are exact in every type). Encoding then starts from
+ * the code of linear's bucket and steps up, without a power per pixel: a step or two with
+ * the host's 4,096 buckets; the MCU's 256 save RAM and take more steps near black, where
+ * the curve is steep (up to 13 codes in the first 1/256). */
+#define SRGB_STEPS RT_COLOUR_STEPS /* buckets of linear values in [0, 1) */
 static real srgb_thresholds[256];
 static unsigned char srgb_start[SRGB_STEPS];
 static int thresholds_ready;

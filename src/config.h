@@ -87,6 +87,12 @@
 #endif
 #define RT_POLYGON_RUN 16 /* edges in a run */
 
+/* Buckets of the sRGB encoder's table (colour.c), a power of two: the host's 4,096 make
+ * encoding a step or two; the MCU's 256 save its RAM. The bytes are the same. */
+#ifndef RT_COLOUR_STEPS
+#define RT_COLOUR_STEPS 4096
+#endif
+
 /* The ANSI colour previews; 0 leaves them out (ASCII only) where flash is short. */
 #ifndef RT_PREVIEW_COLOR
 #define RT_PREVIEW_COLOR 1
