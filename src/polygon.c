@@ -49,19 +49,23 @@ static ray_frame frame_of(const ray *r)
 }
 
 #if RT_POLYGON_RUNS
-/* Does every vertex in the box [lo, hi] have v on the same side of 0? The box's corner
- * with the least v and the one with the most, chosen by the signs of the terms: every
- * step of v's arithmetic (a product by a fixed factor, a difference, in each type's
- * rounding) is monotonic, so no vertex in the box computes a v outside theirs, and a run
- * skipped here is one whose every edge crossings() would have passed over. */
-static int run_one_side(vec3 lo, vec3 hi, const ray_frame *f, int z)
+/* Can no edge with both ends in the box [lo, hi] count? When every vertex in it has v on
+ * the same side of 0 (no edge straddles v = 0), or u below 0 (an edge that straddles
+ * meets v = 0 at u < 0, which the +u ray does not reach). The box's corners with the
+ * least and most v, and the one with the most u, chosen by the signs of the terms: every
+ * step of u's and v's arithmetic (a difference, a product by a fixed factor, in each
+ * type's rounding) is monotonic, so no vertex in the box computes a value beyond theirs,
+ * and a run passed over here is one whose every edge crossings() would have passed over. */
+static int run_passes(vec3 lo, vec3 hi, const ray_frame *f, int z)
 {
 	vec3 l = frame_axes(lo, z), h = frame_axes(hi, z);
 	real least = real_cross_unit(f->dz, f->dz >= 0 ? l.y : h.y, f->dy, f->dy >= 0 ? h.z : l.z) -
 		     f->v_origin;
 	real most = real_cross_unit(f->dz, f->dz >= 0 ? h.y : l.y, f->dy, f->dy >= 0 ? l.z : h.z) -
 		    f->v_origin;
-	return least >= 0 || most < 0;
+	return least >= 0 || most < 0 ||
+	       real_cross_unit(f->dz, (f->dz >= 0 ? h.x : l.x) - f->origin.x, f->dx,
+			       (f->dx >= 0 ? l.z : h.z) - f->origin.z) < 0;
 }
 #endif
 
@@ -79,14 +83,14 @@ static inline int crossings(const vec3 *vertices, int count, const ray_frame *f,
 	real av = real_cross_unit(f->dz, a.y, f->dy, a.z) - f->v_origin;
 	do {
 #if RT_POLYGON_RUNS
-		/* At a run's start (not the first vertex: the edge into it starts at the
-		 * last), pass over each run whose box holds the ends of the edges into
-		 * vertices i .. i + RUN - 1 and lies on one side. */
-		if (s && i > 0 && (first + i) % RT_POLYGON_RUN == 0) {
+		/* At a run's start (runs start at vertex 1, 1 + RUN, ...: the edge into
+		 * vertex 0 starts at the last), pass over each run whose box holds the ends
+		 * of the edges into vertices i .. i + RUN - 1 and lets none of them count. */
+		if (s && i > 0 && (i - 1) % RT_POLYGON_RUN == 0) {
 			int passed = 0;
 			while (i + RT_POLYGON_RUN <= count &&
-			       run_one_side(s->run_lo[(first + i) / RT_POLYGON_RUN],
-					    s->run_hi[(first + i) / RT_POLYGON_RUN], f, z)) {
+			       run_passes(s->run_lo[(first + i) / RT_POLYGON_RUN],
+					  s->run_hi[(first + i) / RT_POLYGON_RUN], f, z)) {
 				i += RT_POLYGON_RUN;
 				passed = 1;
 			}
@@ -96,7 +100,7 @@ static inline int crossings(const vec3 *vertices, int count, const ray_frame *f,
 			}
 		}
 		/* Then vertex by vertex up to the next run's start. */
-		stop = s ? i + RT_POLYGON_RUN - (first + i) % RT_POLYGON_RUN : count;
+		stop = !s ? count : i == 0 ? 1 : i + RT_POLYGON_RUN - (i - 1) % RT_POLYGON_RUN;
 		stop = stop < count ? stop : count;
 #else
 		(void)s;
@@ -276,14 +280,16 @@ void polygon_init(scene *s, polygon_shape *poly, dir3 normal, int first, int cou
 	poly->count = count;
 #if RT_POLYGON_RUNS
 	{
-		/* The boxes of the runs that lie wholly in this polygon, with the vertex before
-		 * each (the start of its first edge). */
+		/* The boxes of the polygon's runs, from vertex 1 in steps of RUN, each with
+		 * the vertex before it (the start of its first edge). A run's slot is its
+		 * first vertex's pool index over RUN: runs RUN apart, and those of the next
+		 * polygon start past this one's end, so no two share a slot. */
 		int k, i;
-		for (k = (first + RT_POLYGON_RUN) / RT_POLYGON_RUN;
-		     (k + 1) * RT_POLYGON_RUN <= first + count; k++) {
-			box_empty(&s->run_lo[k], &s->run_hi[k]);
-			for (i = k * RT_POLYGON_RUN - 1; i < (k + 1) * RT_POLYGON_RUN; i++)
-				box_grow(&s->run_lo[k], &s->run_hi[k], s->vertices[i]);
+		for (k = 1; k + RT_POLYGON_RUN <= count; k += RT_POLYGON_RUN) {
+			int slot = (first + k) / RT_POLYGON_RUN;
+			box_empty(&s->run_lo[slot], &s->run_hi[slot]);
+			for (i = first + k - 1; i < first + k + RT_POLYGON_RUN; i++)
+				box_grow(&s->run_lo[slot], &s->run_hi[slot], s->vertices[i]);
 		}
 	}
 #endif

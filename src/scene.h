@@ -124,8 +124,8 @@ typedef struct {
 	dir3 normals[RT_PATCH_VERTICES]; /* each vertex's shading normal */
 	halfspace planes[RT_MAX_PLANES];
 #if RT_POLYGON_RUNS
-	/* Box k bounds pool vertices [k R - 1, (k + 1) R), R = RT_POLYGON_RUN, when one
-	 * polygon holds them all (polygon_init): the ends of R edges. */
+	/* The boxes of the polygons' runs of RT_POLYGON_RUN edges (polygon_init): the run
+	 * whose first vertex is pool vertex g is in slot g / RT_POLYGON_RUN. */
 	vec3 run_lo[RT_MAX_VERTICES / RT_POLYGON_RUN + 1], run_hi[RT_MAX_VERTICES / RT_POLYGON_RUN + 1];
 #endif
 } scene;

@@ -632,8 +632,8 @@ static void test_patch(void)
 	check_patch_normal(&quad, REAL_C(0.25), REAL_C(0.75), e);
 }
 
-/* A big star polygon (203 vertices, after a small polygon so that its runs of edges do
- * not start at its first vertex), tilted: rays from its front at random points of its
+/* A big star polygon (203 vertices, after a small polygon in the pool: its runs' slots
+ * are not the pool's first), tilted: rays from its front at random points of its
  * plane, at its vertices and at its edges' middles meet it through polygon_intersect
  * (which passes over runs of edges by their boxes) exactly when the plain crossings
  * test says they should. */
