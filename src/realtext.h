@@ -21,7 +21,64 @@
 #else
 #include <stdio.h>
 
+#include <float.h>
+
 #define REAL_INPUT_LIMIT REAL_C(1e12) /* the largest magnitude a scene may write */
+
+/* The short decimals scenes are made of, read without strtod (Clinger's fast path): a
+ * whole number of at most REAL_EXACT_DIGITS digits and a power of ten up to
+ * REAL_EXACT_POW10 are both exact in the type, so one product or quotient of them is
+ * rounded once, correctly, to what strtod returns, bit for bit. Only where each operation
+ * rounds to the type itself (FLT_EVAL_METHOD 0). 1 M spheres: strtod was a third of the
+ * reading. */
+#if defined(RT_REAL_FLOAT)
+#define REAL_EXACT_DIGITS 7  /* below 2^24 */
+#define REAL_EXACT_POW10 10  /* 5^10 < 2^24 */
+#elif defined(RT_REAL_LONG_DOUBLE)
+#define REAL_EXACT_DIGITS (LDBL_MANT_DIG >= 64 ? 19 : 15)
+#define REAL_EXACT_POW10 (LDBL_MANT_DIG >= 64 ? 27 : 22)
+#else
+#define REAL_EXACT_DIGITS 15 /* below 2^53 */
+#define REAL_EXACT_POW10 22  /* 5^22 < 2^53 */
+#endif
+
+/* [+-]digits[.digits][e[+-]digits] read exactly into *out, or 0 when the token is not
+ * of that form or not exact so (strtod then reads it). */
+static inline int real_from_short_decimal(const char *c, real *out)
+{
+	real mantissa = REAL_C(0.0), power = REAL_C(1.0);
+	int negative = *c == '-', digits = 0, scale = 0, exponent = 0, exponent_digits = 0, i;
+	int exponent_negative = 0;
+	if (FLT_EVAL_METHOD != 0)
+		return 0;
+	c += *c == '-' || *c == '+';
+	for (; *c >= '0' && *c <= '9'; c++, digits++)
+		mantissa = mantissa * REAL_C(10.0) + (real)(*c - '0');
+	if (*c == '.')
+		for (c++; *c >= '0' && *c <= '9'; c++, digits++, scale++)
+			mantissa = mantissa * REAL_C(10.0) + (real)(*c - '0');
+	if (digits == 0 || digits > REAL_EXACT_DIGITS)
+		return 0;
+	if (*c == 'e' || *c == 'E') {
+		c++;
+		exponent_negative = *c == '-';
+		c += *c == '-' || *c == '+';
+		for (; *c >= '0' && *c <= '9' && exponent_digits < 3; c++, exponent_digits++)
+			exponent = exponent * 10 + (*c - '0');
+		if (exponent_digits == 0)
+			return 0;
+	}
+	if (*c != '\0')
+		return 0;
+	scale -= exponent_negative ? -exponent : exponent; /* the value is mantissa / 10^scale */
+	if (scale > REAL_EXACT_POW10 || -scale > REAL_EXACT_POW10)
+		return 0;
+	for (i = 0; i < (scale < 0 ? -scale : scale); i++)
+		power *= REAL_C(10.0);
+	mantissa = scale < 0 ? mantissa * power : mantissa / power;
+	*out = negative ? -mantissa : mantissa;
+	return 1;
+}
 /* Reading numbers: real_from_text converts a whole token, times 2^shift (the scene's
  * length scale, always 0 in floating point), and returns a REAL_TEXT_ status. */
 static inline int real_from_text(const char *text, int shift, real *out)
@@ -34,9 +91,11 @@ static inline int real_from_text(const char *text, int shift, real *out)
 	for (c = text; *c; c++)
 		if (*c == 'x' || *c == 'X')
 			return REAL_TEXT_NOT_A_NUMBER;
-	*out = real_parse(text, &end);
-	if (end == text || *end != '\0')
-		return REAL_TEXT_NOT_A_NUMBER;
+	if (!real_from_short_decimal(text, out)) {
+		*out = real_parse(text, &end);
+		if (end == text || *end != '\0')
+			return REAL_TEXT_NOT_A_NUMBER;
+	}
 	if (!real_isfinite(*out))
 		return REAL_TEXT_NOT_FINITE;
 	if (*out == REAL_C(0.0)) {

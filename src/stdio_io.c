@@ -87,26 +87,26 @@ static int file_read(void *ctx)
 	file_reader *f = ctx;
 	int c;
 	if (f->reopen) {
-		c = getc(f->file);
+		c = getc_unlocked(f->file);
 		return c == EOF ? -1 : c;
 	}
 	if (f->at < f->copied) {
 		if (f->writing && fseek(f->copy, f->at, SEEK_SET) != 0)
 			return -1;
 		f->writing = 0;
-		c = getc(f->copy);
+		c = getc_unlocked(f->copy);
 		if (c == EOF)
 			return -1;
 		f->at++;
 		return c;
 	}
-	c = getc(f->file);
+	c = getc_unlocked(f->file);
 	if (c == EOF)
 		return -1;
 	if (!f->writing && fseek(f->copy, 0, SEEK_END) != 0)
 		return -1;
 	f->writing = 1;
-	if (putc(c, f->copy) == EOF)
+	if (putc_unlocked(c, f->copy) == EOF)
 		return -1;
 	f->copied++;
 	f->at++;

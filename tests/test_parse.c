@@ -1,11 +1,14 @@
 /* test_parse.c - the scene parser, in process: every NFF entity and extension, odd but
  * valid input, and malformed input with its exact message and line.
  * See LICENSE for copyright and licence. */
+#include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "diag.h"
 #include "load.h"
 #include "parse.h"
+#include "realtext.h"
 #include "test.h"
 
 #define FILE_NAME "t.nff"
@@ -841,6 +844,51 @@ static void test_file(void)
 	CHECK(strncmp(messages, prefix, sizeof prefix - 1) == 0);
 }
 
+#if !REAL_FIXED
+/* Short decimals are read without strtod (realtext.h): 200,000 random tokens of every
+ * form (signs, leading and trailing zeros, a point anywhere or none, exponents, and too
+ * many digits for the short way) must read bit for bit as strtod reads them, and most
+ * must take the short way. */
+static void test_short_decimals(void)
+{
+	static char token[64];
+	int i, same = 0, short_way = 0;
+	test_seed(18);
+	for (i = 0; i < 200000; i++) {
+		int digits = 1 + (int)test_random_range(0.0, 19.99), point = (int)test_random_range(
+										 -1.0, digits + 0.99);
+		int at = 0, k;
+		real fast = REAL_C(0.0), slow;
+		char *end;
+		if (test_random() < 0.3)
+			token[at++] = test_random() < 0.5 ? '-' : '+';
+		for (k = 0; k < digits; k++) {
+			if (k == point)
+				token[at++] = '.';
+			token[at++] = (char)('0' + (int)test_random_range(0.0, 9.99) *
+							 (test_random() < 0.2 ? 0 : 1));
+		}
+		if (point == digits)
+			token[at++] = '.';
+		if (test_random() < 0.3)
+			at += snprintf(token + at, sizeof token - (size_t)at, "e%d",
+				       (int)test_random_range(-40.0, 40.0));
+		token[at] = '\0';
+		slow = real_parse(token, &end);
+		if (real_from_short_decimal(token, &fast)) {
+			short_way++;
+			/* Equal values, and zeros of the same sign (memcmp would see long
+			 * double's padding bytes). */
+			same += fast == slow && !signbit(fast) == !signbit(slow);
+		} else {
+			same++;
+		}
+	}
+	CHECK_INT(same, 200000);
+	CHECK(short_way > 50000);
+}
+#endif
+
 void suite_parse(void)
 {
 	test_view();
@@ -863,4 +911,7 @@ void suite_parse(void)
 	test_bad_bytes();
 	test_capacities();
 	test_file();
+#if !REAL_FIXED
+	test_short_decimals();
+#endif
 }
