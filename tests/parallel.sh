@@ -49,6 +49,16 @@ same_at_every_j "--stats counts" --stats -s 64x48 scenes/showpiece.nff
 same_at_every_j "more workers than rows" -s 9x2 scenes/showpiece.nff
 same_at_every_j "depth 1" -d 1 -s 40x30 scenes/showpiece.nff
 same_at_every_j "PNG" -s 64x48 -o - -f png scenes/showpiece.nff
+# A line renders alike whatever lines its process traced before. This scene is at the
+# edge of Q16.16's range, where a cone's test reports hits outside its box: a blocker
+# remembered from an earlier line shadowed what the hierarchy lit, and -j changed pixels.
+if [ -x build/rt-fixed ]; then
+	saved_rt=$RT
+	RT=$(pwd)/build/rt-fixed
+	same_at_every_j "Q16.16, edge of range" -s 48x36 \
+		tests/fuzz/corpus/42c56d3d63f5cdc416ebc1ac0c11527251c58b48
+	RT=$saved_rt
+fi
 
 # The counts --stats prints are the workers' summed: at -j 2 the eye rays are the image's.
 run -j 2 --stats -s 40x30 scenes/showpiece.nff
