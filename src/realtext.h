@@ -47,7 +47,7 @@
 static inline int real_from_short_decimal(const char *c, real *out)
 {
 	real mantissa = REAL_C(0.0), power = REAL_C(1.0);
-	int negative = *c == '-', digits = 0, scale = 0, exponent = 0, exponent_digits = 0, i;
+	int negative = *c == '-', digits = 0, scale = 0, exponent = 0, i;
 	int exponent_negative = 0;
 	if (FLT_EVAL_METHOD != 0)
 		return 0;
@@ -60,6 +60,7 @@ static inline int real_from_short_decimal(const char *c, real *out)
 	if (digits == 0 || digits > REAL_EXACT_DIGITS)
 		return 0;
 	if (*c == 'e' || *c == 'E') {
+		int exponent_digits = 0;
 		c++;
 		exponent_negative = *c == '-';
 		c += *c == '-' || *c == '+';

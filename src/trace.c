@@ -390,16 +390,17 @@ static vec3 trace_ray(tracer *t, const ray *r, int skip, int level, real weight,
 
 void trace_eye_line(tracer *t, dir3 n)
 {
-	int i;
 	origin_terms_plane(accel_scene(t->accel), n, &t->eye);
 	/* Each line starts without remembered blockers, so that it renders alike whatever
 	 * lines a process traced before it (-j, --rows, -a's rows): a remembered blocker is
 	 * tested alone, and a test that reports a hit outside the object's box (Q16.16 on
 	 * a scene at the edge of its range) would shadow what the hierarchy, which skips
 	 * that box, lights. Without a hierarchy (the MCU) every object is tested anyway. */
-	if (RT_USE_BVH)
+	if (RT_USE_BVH) {
+		int i;
 		for (i = 0; i < RT_MAX_DEPTH * RT_MAX_LIGHTS; i++)
 			t->last_blocker[i / RT_MAX_LIGHTS][i % RT_MAX_LIGHTS] = -1;
+	}
 }
 
 vec3 trace_eye(tracer *t, const ray *r, int *hit_object)
