@@ -35,4 +35,11 @@ static inline void box_grow_box(vec3 *lo, vec3 *hi, vec3 blo, vec3 bhi)
 	hi->z = real_max(hi->z, bhi.z);
 }
 
+/* Whether p lies in the box [lo, hi], faces included. */
+static inline int box_holds(vec3 lo, vec3 hi, vec3 p)
+{
+	return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y && p.z >= lo.z &&
+	       p.z <= hi.z;
+}
+
 #endif

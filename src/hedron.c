@@ -18,9 +18,28 @@ void hedron_plane_init(halfspace *h, vec3 n, real2 length2, real d)
 
 /* ---- bounds and clearance --------------------------------------------------------- */
 
+/* Below this |n_i . (n_j x n_k)| three unit normals are parallel as far as the arithmetic
+ * can tell, and their corner is not determined. A fixed threshold (it was 1e-9) lost the
+ * ridge of a roof flatter than that in double and long double; a corner this close to
+ * degenerate lies within rounding of its neighbours. Fixed point's Q16.16 determinant
+ * is exact enough to take every nonzero one. */
+#define CORNER_DET_MIN (REAL_FIXED ? REAL_C(0.0) : 64 * REAL_EPSILON)
+
+/* How far rounding may have moved a corner p = numerator / det computed from offsets of
+ * total size `offsets`: a few roundings of each term, magnified by 1 / |det|, which is
+ * large for a corner where the planes meet at a shallow angle. Floating point only: the
+ * fixed-point corners are as they were, and its box padding covers them. */
+static real corner_error(real offsets, vec3 p, real det)
+{
+	if (REAL_FIXED)
+		return REAL_C(0.0);
+	return 8 * REAL_EPSILON * (offsets + 2 * vec_max_abs(p)) / real_fabs(det);
+}
+
 /* Corners of a convex polyhedron: every point where three planes meet and that lies
- * inside all the others. The planes are first closed by a huge box; a corner on that box
- * means the polyhedron is unbounded (returns 0). */
+ * inside all the others (within the corner's rounding). The planes are first closed by a
+ * huge box; a corner on that box means the polyhedron is unbounded (returns 0). The box
+ * holds each corner together with its rounding. */
 int hedron_bounds(const scene *s, const hedron_shape *g, vec3 *lo, vec3 *hi)
 {
 	halfspace planes[RT_MAX_HEDRON_PLANES + 6];
@@ -48,15 +67,21 @@ int hedron_bounds(const scene *s, const hedron_shape *g, vec3 *lo, vec3 *hi)
 				 * d_k (n_i x n_j)) / (n_i . (n_j x n_k)). */
 				vec3 jk = vec_cross(normal[j], normal[k]);
 				real det = vec_dot(normal[i], jk);
-				vec3 p;
-				if (!(real_fabs(det) > REAL_C(1e-9)))
+				vec3 p, error;
+				real rounding;
+				if (!(real_fabs(det) > CORNER_DET_MIN))
 					continue;
 				p = vec_scale(jk, planes[i].offset);
 				p = vec_madd(p, planes[j].offset, vec_cross(normal[k], normal[i]));
 				p = vec_madd(p, planes[k].offset, vec_cross(normal[i], normal[j]));
 				p = vec_scale(p, real_div(REAL_C(1.0), det));
+				rounding = corner_error(real_fabs(planes[i].offset) +
+								real_fabs(planes[j].offset) +
+								real_fabs(planes[k].offset),
+							p, det);
 				for (m = 0; m < count + 6; m++) {
-					real slack = real_surface_offset(real_max(REAL_C(1.0), vec_max_abs(p)), 1);
+					real slack = real_surface_offset(real_max(REAL_C(1.0), vec_max_abs(p)), 1) +
+						     2 * rounding;
 					if (vec_dot(normal[m], p) > planes[m].offset + slack)
 						break;
 				}
@@ -64,7 +89,9 @@ int hedron_bounds(const scene *s, const hedron_shape *g, vec3 *lo, vec3 *hi)
 					continue;
 				if (k >= count)
 					return 0; /* a corner on the closing box: unbounded */
-				box_grow(lo, hi, p);
+				error = vec_make(rounding, rounding, rounding);
+				box_grow(lo, hi, vec_sub(p, error));
+				box_grow(lo, hi, vec_add(p, error));
 				corners++;
 			}
 	return corners > 0;
@@ -129,9 +156,13 @@ int hedron_intersect(const scene *s, const object *o, const ray *r, real tmin, r
 			}
 		}
 	}
-	/* Entering hit if it lies past tmin, else the exit from inside (numerics.md P10, P11:
-	 * a strict tmin keeps a ray that starts on a face from hitting it at t = 0). */
-	if (near_face >= 0 && tnear > tmin) {
+	/* Entering hit if it lies strictly between tmin and tmax, else the exit from inside
+	 * (numerics.md P10, P11: a strict tmin keeps a ray that starts on a face from hitting
+	 * it at t = 0). A strict tmax, as every other shape has, leaves a hit at the very
+	 * distance of the nearest so far to the object found first, as the hierarchy's tie
+	 * rule needs; the MCU build, which has no hierarchy, leaves the test out for flash
+	 * (docs/mcu.md). */
+	if (near_face >= 0 && tnear > tmin && (!RT_USE_BVH || tnear < tmax)) {
 		t = tnear;
 		face = near_face;
 	} else if (far_face >= 0 && tfar > tmin && !(tnear > tfar)) {

@@ -272,19 +272,25 @@ static vec3 centroid_of(const vec3 *v, int count)
 void polygon_init(scene *s, polygon_shape *poly, dir3 normal, int first, int count, int patch)
 {
 	vec3 centroid;
+	int i;
 	poly->normal = normal;
 	/* The plane passes through the centroid: the best fit for slightly non-planar input. */
 	centroid = centroid_of(s->vertices + first, count);
 	poly->offset = dir_dot_vec(poly->normal, centroid);
 	poly->first = first;
 	poly->count = count;
+	poly->spread = REAL_C(0.0);
+	for (i = 0; i < count && RT_USE_BVH; i++) {
+		real gap = real_fabs(plane_gap(normal, poly->offset, &s->vertices[first + i]));
+		poly->spread = real_max(poly->spread, gap);
+	}
 #if RT_POLYGON_RUNS
 	{
 		/* The boxes of the polygon's runs, from vertex 1 in steps of RUN, each with
 		 * the vertex before it (the start of its first edge). A run's slot is its
 		 * first vertex's pool index over RUN: runs RUN apart, and those of the next
 		 * polygon start past this one's end, so no two share a slot. */
-		int k, i;
+		int k;
 		for (k = 1; k + RT_POLYGON_RUN <= count; k += RT_POLYGON_RUN) {
 			int slot = (first + k) / RT_POLYGON_RUN;
 			box_empty(&s->run_lo[slot], &s->run_hi[slot]);
@@ -299,7 +305,6 @@ void polygon_init(scene *s, polygon_shape *poly, dir3 normal, int first, int cou
 			     ? (unit_fabs(poly->normal.x) > unit_fabs(poly->normal.z) ? 0 : 2)
 			     : (unit_fabs(poly->normal.y) > unit_fabs(poly->normal.z) ? 1 : 2);
 	if (patch) {
-		int i;
 		/* A zero vertex normal falls back to the face normal. */
 		for (i = 0; i < count; i++) {
 			dir3 *n = &s->normals[first + i];
@@ -310,13 +315,42 @@ void polygon_init(scene *s, polygon_shape *poly, dir3 normal, int first, int cou
 
 /* ---- bounds and clearance --------------------------------------------------------- */
 
+/* Where a polygon's hits lie. A ray that passes through a polygon's outline crosses the
+ * fan from its centroid to its edges, inside its vertices' box and no farther than
+ * `spread` from its plane, and meets the plane within spread / |cos| of there along the
+ * ray (cos: of the angle between the ray and the normal). So for |cos| >= 1 / REACH the
+ * hit lies within REACH * spread of the vertices' box (the polygon's bounds), plus
+ * rounding, which the hierarchy pads every box by; a more grazing ray's hit is checked
+ * against that box with the same padding (polygon_intersect), so that no hit ever lies
+ * outside the box the hierarchy is given. */
+#define REACH 4
+#define REACH_COS UNIT_C(0.25) /* 1 / REACH */
+
 int polygon_bounds(const scene *s, const polygon_shape *poly, vec3 *lo, vec3 *hi)
 {
+	real reach;
 	int i;
 	box_empty(lo, hi);
 	for (i = 0; i < poly->count; i++)
 		box_grow(lo, hi, s->vertices[poly->first + i]);
+	/* Held within REAL_FAR (fixed point's range): a polygon that spreads that far
+	 * reaches across the whole scene anyway. */
+	reach = real_min(poly->spread, real_div(REAL_FAR, REAL_C(4.0))) * REACH;
+	*lo = vec_sub(*lo, vec_make(reach, reach, reach));
+	*hi = vec_add(*hi, vec_make(reach, reach, reach));
 	return 1;
+}
+
+/* Whether p lies in the polygon's bounds, padded for rounding as the hierarchy pads them
+ * (bvh_build.c). */
+static int reaches(const scene *s, const polygon_shape *poly, vec3 p)
+{
+	vec3 lo, hi, pad;
+	polygon_bounds(s, poly, &lo, &hi);
+	pad = vec_make(REAL_C(1.0), REAL_C(1.0), REAL_C(1.0));
+	pad = vec_scale(pad, real_surface_offset(
+				     real_max(REAL_C(1.0), real_max(vec_max_abs(lo), vec_max_abs(hi))), 1));
+	return box_holds(vec_sub(lo, pad), vec_add(hi, pad), p);
 }
 
 /* How far x lies outside the vertices' range along one axis. */
@@ -365,6 +399,12 @@ int polygon_intersect(const scene *s, const object *o, const ray *r, real tmin, 
 	if (!(t > tmin && t < tmax))
 		return 0;
 	if (!contains_ray(s->vertices + poly->first, poly->count, r, s, poly->first))
+		return 0;
+	/* A grazing ray may meet the plane far off a non-planar polygon (see polygon_bounds):
+	 * a hit beyond the box is none. The MCU build, which has no hierarchy, leaves this
+	 * out for flash (docs/mcu.md). */
+	if (RT_USE_BVH && unit_fabs(denom) < REACH_COS &&
+	    !reaches(s, poly, dir_madd(r->origin, t, r->dir)))
 		return 0;
 	if (h) {
 		vec3 p = dir_madd(r->origin, t, r->dir);

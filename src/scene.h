@@ -47,10 +47,13 @@ typedef struct {
 
 /* A polygon's vertices are scene.vertices[first .. first+count); a patch's normals
  * are scene.normals at the same indices. `normal` and `offset` give its plane n.x = offset;
- * `axis` is the coordinate a patch drops to project it to 2D (the normal's largest). */
+ * `spread` is how far the farthest vertex lies off that plane (0 when planar, up to
+ * rounding); `axis` is the coordinate a patch drops to project it to 2D (the normal's
+ * largest). */
 typedef struct {
 	dir3 normal;
 	real offset;
+	real spread;
 	int first, count;
 	int axis;
 } polygon_shape;

@@ -40,6 +40,7 @@ static object polygon_object(int first, int count, vec3 normal, real offset, int
 	o.line = 0;
 	o.u.polygon.normal = dir_normalize(normal);
 	o.u.polygon.offset = offset;
+	o.u.polygon.spread = REAL_C(0.0); /* the vertices lie in the plane given */
 	o.u.polygon.first = first;
 	o.u.polygon.count = count;
 	o.u.polygon.axis = axis;
