@@ -14,19 +14,92 @@
 
 RT_STATIC_ASSERT(node_count_fits, 2 * (long)RT_MAX_OBJECTS < 2147483647L);
 
-/* Build scratch: each bounded object's bounds and their centre, kept in the order of the
- * tree's index (partitioned with it), so that every pass over a node's objects reads
- * memory in order: reached through the index, the 1 M sphere build spent most of its 1.4 s
- * waiting for memory. */
+/* A box corner as the node keeps it: rounded outwards (up for the upper corner) where
+ * that is to float, else as it is. */
+static bvh_point corner_outward(vec3 v, int up)
+{
+#if BVH_WIDE
+	bvh_point p;
+	p.x = float_outward(v.x, up);
+	p.y = float_outward(v.y, up);
+	p.z = float_outward(v.z, up);
+	return p;
+#else
+	(void)up;
+	return v;
+#endif
+}
+
+/* A corner back as reals (exact: a float is a real in every floating type). */
+static inline vec3 point_vec(bvh_point p)
+{
+	return vec_make((real)p.x, (real)p.y, (real)p.z);
+}
+
+/* Makes [lo, hi] the empty box, inside out. */
+static void points_empty(bvh_point *lo, bvh_point *hi)
+{
+#if BVH_WIDE
+	lo->x = lo->y = lo->z = FLT_MAX;
+	hi->x = hi->y = hi->z = -FLT_MAX;
+#else
+	box_empty(lo, hi);
+#endif
+}
+
+/* Grows [lo, hi] to hold the box [a, b] (a <= b), in the corners' own type. */
+static inline void points_grow(bvh_point *lo, bvh_point *hi, const bvh_point *a, const bvh_point *b)
+{
+	lo->x = a->x < lo->x ? a->x : lo->x;
+	lo->y = a->y < lo->y ? a->y : lo->y;
+	lo->z = a->z < lo->z ? a->z : lo->z;
+	hi->x = b->x > hi->x ? b->x : hi->x;
+	hi->y = b->y > hi->y ? b->y : hi->y;
+	hi->z = b->z > hi->z ? b->z : hi->z;
+}
+
+/* Build scratch: each bounded object's bounds, as the nodes keep them (float, rounded
+ * outwards, in floating types: a node's box is then the union of its objects' as they
+ * are), kept in the order of the tree's index (partitioned with it), so that every pass
+ * over a node's objects reads memory in order: reached through the index, the 1 M sphere
+ * build spent most of its 1.4 s waiting for memory, and much of the rest reading boxes
+ * of doubles. */
 typedef struct {
-	vec3 lo, hi, centre;
+	bvh_point lo, hi;
 	int object;
 } build_item;
 static build_item items[RT_MAX_OBJECTS];
 
+/* The centre of an item's box, by which it is binned. */
+static inline vec3 item_centre(const build_item *o)
+{
+	return vec_scale(vec_add(point_vec(o->lo), point_vec(o->hi)), REAL_C(0.5));
+}
+
+/* The box of some items and the box of their centres. */
+typedef struct {
+	bvh_point lo, hi;
+	vec3 clo, chi;
+} item_bounds;
+
+/* The bounds of items[first .. first+count). */
+static item_bounds bounds_of(int first, int count)
+{
+	item_bounds b;
+	int i;
+	points_empty(&b.lo, &b.hi);
+	box_empty(&b.clo, &b.chi);
+	for (i = 0; i < count; i++) {
+		const build_item *o = &items[first + i];
+		points_grow(&b.lo, &b.hi, &o->lo, &o->hi);
+		box_grow(&b.clo, &b.chi, item_centre(o));
+	}
+	return b;
+}
+
 /* The bin (0 .. BINS-1) of a centre at `offset` past the lowest centre, out of `extent`.
  * The comparison keeps a NaN or out-of-range quotient from reaching the int conversion. */
-static int bin_of(real offset, real extent)
+static inline int bin_of(real offset, real extent)
 {
 	real b = real_mul(real_div(offset, extent), real_from_int(BINS));
 	return b >= REAL_C(0.0) ? (b < real_from_int(BINS) ? real_to_int(b) : BINS - 1) : 0;
@@ -38,7 +111,7 @@ static int bin_of(real offset, real extent)
  * tree, a division per object and axis fewer: the 1 M sphere build took 1.8 s). Fixed
  * point keeps its quotient: its product rounds differently. */
 #define BIN_SLACK REAL_C(0.00001)
-static int bin_by_scale(real offset, real extent, real scale)
+static inline int bin_by_scale(real offset, real extent, real scale)
 {
 	real b = real_mul(offset, scale);
 	if (!REAL_SATURATES && b >= REAL_C(0.0) && b < real_from_int(BINS)) {
@@ -58,17 +131,19 @@ static real2 half_area(vec3 lo, vec3 hi)
 	return real_mul2(d.x, d.y) + real_mul2(d.y, d.z) + real_mul2(d.z, d.x);
 }
 
-/* Chooses the split of index[first .. first+count), whose centres lie in [clo, chi], with
- * the lowest SAH cost over BINS bins of centres per axis and partitions the objects by
- * it. Returns the number moved to the left, or 0 when a leaf is cheaper and small enough,
- * or when all centres coincide. */
-static int sah_split(int first, int count, vec3 node_lo, vec3 node_hi, vec3 clo,
-		     vec3 chi, int *axis_out)
+/* Chooses the split of items[first .. first+count), whose bounds are `node`, with the
+ * lowest SAH cost over BINS bins of centres per axis and partitions the objects by it.
+ * Returns the number moved to the left, or 0 when a leaf is cheaper and small enough, or
+ * when all centres coincide; child[0] and child[1] get the two sides' bounds (the bins'
+ * boxes and the centres met in the partition: no pass of their own). */
+static int sah_split(int first, int count, const item_bounds *node, int *axis_out,
+		     item_bounds child[2])
 {
-	real2 node_area = half_area(node_lo, node_hi);
+	real2 node_area = half_area(point_vec(node->lo), point_vec(node->hi));
+	vec3 clo = node->clo, chi = node->chi;
 	real best_cost, lo[3], extent[3], scale[3];
 	int bin_count[3][BINS];
-	vec3 bin_lo[3][BINS], bin_hi[3][BINS];
+	bvh_point bin_lo[3][BINS], bin_hi[3][BINS];
 	int best_axis = -1, best_plane = 0, axis, i, left;
 	for (axis = 0; axis < 3; axis++) {
 		lo[axis] = vec_get(clo, axis);
@@ -78,49 +153,51 @@ static int sah_split(int first, int count, vec3 node_lo, vec3 node_hi, vec3 clo,
 				      : REAL_C(0.0);
 		for (i = 0; i < BINS; i++) {
 			bin_count[axis][i] = 0;
-			box_empty(&bin_lo[axis][i], &bin_hi[axis][i]);
+			points_empty(&bin_lo[axis][i], &bin_hi[axis][i]);
 		}
 	}
 	/* One pass over the objects bins them on all three axes. */
 	for (i = 0; i < count; i++) {
 		const build_item *o = &items[first + i];
+		vec3 centre = item_centre(o);
 		for (axis = 0; axis < 3; axis++) {
 			int b;
 			if (!(extent[axis] > REAL_C(0.0)))
 				continue;
-			b = bin_by_scale(vec_get(o->centre, axis) - lo[axis], extent[axis], scale[axis]);
+			b = bin_by_scale(vec_get(centre, axis) - lo[axis], extent[axis], scale[axis]);
 			bin_count[axis][b]++;
-			box_grow_box(&bin_lo[axis][b], &bin_hi[axis][b], o->lo, o->hi);
+			points_grow(&bin_lo[axis][b], &bin_hi[axis][b], &o->lo, &o->hi);
 		}
 	}
 	/* Leaf cost: one intersection per object; a split costs one traversal step plus the
 	 * children's objects weighted by the chance of entering each. */
 	best_cost = REAL_MAX;
 	for (axis = 0; axis < 3; axis++) {
-		vec3 run_lo, run_hi;
+		bvh_point run_lo, run_hi;
 		real2 right_area[BINS];
 		int right_count[BINS], n;
 		if (!(extent[axis] > REAL_C(0.0)))
 			continue;
 		/* Sweep from the right, then from the left, pricing each plane between bins.
 		 * An empty bin's box is inside out (+MAX..-MAX) and must not be grown by. */
-		box_empty(&run_lo, &run_hi);
+		points_empty(&run_lo, &run_hi);
 		n = 0;
 		for (i = BINS - 1; i > 0; i--) {
 			n += bin_count[axis][i];
 			if (bin_count[axis][i])
-				box_grow_box(&run_lo, &run_hi, bin_lo[axis][i], bin_hi[axis][i]);
+				points_grow(&run_lo, &run_hi, &bin_lo[axis][i], &bin_hi[axis][i]);
 			/* Only the planes after a bin with objects are priced (below). */
-			right_area[i] = bin_count[axis][i - 1] ? half_area(run_lo, run_hi) : 0;
+			right_area[i] = bin_count[axis][i - 1] ? half_area(point_vec(run_lo), point_vec(run_hi))
+								: 0;
 			right_count[i] = n;
 		}
-		box_empty(&run_lo, &run_hi);
+		points_empty(&run_lo, &run_hi);
 		n = 0;
 		for (i = 0; i < BINS - 1; i++) {
 			real cost;
 			n += bin_count[axis][i];
 			if (bin_count[axis][i])
-				box_grow_box(&run_lo, &run_hi, bin_lo[axis][i], bin_hi[axis][i]);
+				points_grow(&run_lo, &run_hi, &bin_lo[axis][i], &bin_hi[axis][i]);
 			/* The plane after an empty bin parts the objects as the one before it
 			 * does, at the same cost, which cannot be lower: most planes of a small
 			 * node, where the pricing is most of the work. */
@@ -129,7 +206,8 @@ static int sah_split(int first, int count, vec3 node_lo, vec3 node_hi, vec3 clo,
 			/* Areas relative to the node's: the chance that a ray entering the node
 			 * enters each child. */
 			cost = REAL_C(0.5) +
-			       real_mul(real2_ratio(half_area(run_lo, run_hi), node_area),
+			       real_mul(real2_ratio(half_area(point_vec(run_lo), point_vec(run_hi)),
+						    node_area),
 					real_from_int(n)) +
 			       real_mul(real2_ratio(right_area[i + 1], node_area),
 					real_from_int(right_count[i + 1]));
@@ -143,13 +221,25 @@ static int sah_split(int first, int count, vec3 node_lo, vec3 node_hi, vec3 clo,
 	/* Keep a leaf when that is cheaper, unless it would be too big. */
 	if (best_axis < 0 || (best_cost >= real_from_int(count) && count <= MAX_LEAF))
 		return 0;
-	/* Partition: objects whose centre falls in bins 0..best_plane go left. */
+	/* Each side's box is the union of its bins' boxes. */
+	for (i = 0; i < 2; i++) {
+		points_empty(&child[i].lo, &child[i].hi);
+		box_empty(&child[i].clo, &child[i].chi);
+	}
+	for (i = 0; i < BINS; i++)
+		if (bin_count[best_axis][i])
+			points_grow(&child[i > best_plane].lo, &child[i > best_plane].hi,
+				    &bin_lo[best_axis][i], &bin_hi[best_axis][i]);
+	/* Partition: objects whose centre falls in bins 0..best_plane go left. Each object
+	 * is looked at once, here or before it is swapped to the right. */
 	{
 		int j = first + count - 1;
 		i = first;
 		while (i <= j) {
-			int b = bin_by_scale(vec_get(items[i].centre, best_axis) - lo[best_axis],
+			vec3 centre = item_centre(&items[i]);
+			int b = bin_by_scale(vec_get(centre, best_axis) - lo[best_axis],
 					     extent[best_axis], scale[best_axis]);
+			box_grow(&child[b > best_plane].clo, &child[b > best_plane].chi, centre);
 			if (b <= best_plane) {
 				i++;
 			} else {
@@ -164,45 +254,25 @@ static int sah_split(int first, int count, vec3 node_lo, vec3 node_hi, vec3 clo,
 	return left > 0 && left < count ? left : 0;
 }
 
-/* A box corner as the node keeps it: rounded outwards (up for the upper corner) where
- * that is to float, else as it is. */
-static bvh_point corner_outward(vec3 v, int up)
-{
-#if BVH_WIDE
-	bvh_point p;
-	p.x = float_outward(v.x, up);
-	p.y = float_outward(v.y, up);
-	p.z = float_outward(v.z, up);
-	return p;
-#else
-	(void)up;
-	return v;
-#endif
-}
-
-/* Fills node `node` for index[first .. first+count) and recurses into its children.
- * Recursion depth is at most BVH_MAX_DEPTH. */
-static void build_node(bvh_tree *t, int node, int first, int count, int depth)
+/* Fills node `node` for items[first .. first+count), whose bounds are `b`, and recurses
+ * into its children. Recursion depth is at most BVH_MAX_DEPTH. */
+static void build_node(bvh_tree *t, int node, int first, int count, const item_bounds *b,
+		       int depth)
 {
 	bvh_node *n = &t->nodes[node];
-	int i, left = 0, axis = 0;
-	vec3 lo, hi, clo, chi; /* the bounds of the objects, and of their centres */
-	box_empty(&lo, &hi);
-	box_empty(&clo, &chi);
-	for (i = 0; i < count; i++) {
-		const build_item *o = &items[first + i];
-		box_grow_box(&lo, &hi, o->lo, o->hi);
-		box_grow(&clo, &chi, o->centre);
-	}
-	n->bounds[0] = corner_outward(lo, 0);
-	n->bounds[1] = corner_outward(hi, 1);
+	item_bounds child[2];
+	int left = 0, axis = 0;
+	n->bounds[0] = b->lo;
+	n->bounds[1] = b->hi;
 	if (count > 1 && depth < BVH_MAX_DEPTH) {
-		left = sah_split(first, count, lo, hi, clo, chi, &axis);
+		left = sah_split(first, count, b, &axis, child);
 		/* Too many objects for one leaf but no plane between their centres (all
 		 * centres equal): split the list in half. */
 		if (!left && count > MAX_LEAF) {
 			left = count / 2;
 			axis = 0;
+			child[0] = bounds_of(first, left);
+			child[1] = bounds_of(first + left, count - left);
 		}
 	}
 	if (!left) {
@@ -215,8 +285,8 @@ static void build_node(bvh_tree *t, int node, int first, int count, int depth)
 	n->count = 0;
 	n->axis = (short)axis;
 	t->node_count += 2;
-	build_node(t, n->start, first, left, depth + 1);
-	build_node(t, n->start + 1, first + left, count - left, depth + 1);
+	build_node(t, n->start, first, left, &child[0], depth + 1);
+	build_node(t, n->start + 1, first + left, count - left, &child[1], depth + 1);
 }
 
 #if BVH_WIDE
@@ -297,9 +367,8 @@ void bvh_build(bvh_tree *t, const scene *s)
 				real_max(REAL_C(1.0), real_max(vec_max_abs(lo), vec_max_abs(hi))), 1);
 			vec3 p = vec_make(pad, pad, pad);
 			build_item *item = &items[i];
-			item->lo = vec_sub(lo, p);
-			item->hi = vec_add(hi, p);
-			item->centre = vec_scale(vec_add(item->lo, item->hi), REAL_C(0.5));
+			item->lo = corner_outward(vec_sub(lo, p), 0);
+			item->hi = corner_outward(vec_add(hi, p), 1);
 			item->object = i;
 		} else {
 			t->index[t->unbounded_count++] = i;
@@ -316,7 +385,11 @@ void bvh_build(bvh_tree *t, const scene *s)
 	if (next == s->object_count)
 		return;
 	t->node_count = 1;
-	build_node(t, 0, t->unbounded_count, s->object_count - t->unbounded_count, 0);
+	{
+		int count = s->object_count - t->unbounded_count;
+		item_bounds all = bounds_of(t->unbounded_count, count);
+		build_node(t, 0, t->unbounded_count, count, &all, 0);
+	}
 	for (i = t->unbounded_count; i < s->object_count; i++)
 		t->index[i] = items[i].object;
 #if BVH_WIDE
