@@ -292,6 +292,12 @@ static inline real traverse(const scene *s, const bvh_tree *t, const ray *r, int
 				 * box of a patch met at the very distance of the nearest hit). */
 				if (!shadow && (real)wide_stack[top].enter > tmax * (real)WIDE_SLACK)
 					continue;
+				if (wide_stack[top].count == WIDE_ONE_OBJECT) {
+					VISIT(wide_stack[top].child);
+					if (!shadow)
+						limit = wide_limit(tmax);
+					continue;
+				}
 				if (wide_stack[top].count) {
 					int first = wide_stack[top].child;
 					int last = first + wide_stack[top].count;
@@ -329,6 +335,10 @@ static inline real traverse(const scene *s, const bvh_tree *t, const ray *r, int
 			near = order[k - 1];
 			if (!node->count[near]) {
 				current = node->child[near];
+			} else if (node->count[near] == WIDE_ONE_OBJECT) {
+				VISIT(node->child[near]);
+				if (!shadow)
+					limit = wide_limit(tmax);
 			} else {
 				int first = node->child[near], last = first + node->count[near];
 				for (i = first; i < last; i++)

@@ -82,9 +82,13 @@ static inline real bvh_bound(const bvh_node *n, int side, int axis)
  * so that a row is one load of four lanes. */
 typedef struct {
 	float box[6][4];
-	int child[4]; /* inner lane: a wide node; leaf lane: the first slot in the index */
+	int child[4]; /* inner lane: a wide node; leaf lane: the first slot in the index, or
+		       * with count WIDE_ONE_OBJECT the object */
 	int count[4]; /* leaf lane: number of objects; 0: an inner lane, or empty (child -1) */
 } bvh_wide_node;
+
+/* The count of a leaf lane of one object, whose child is the object's number. */
+#define WIDE_ONE_OBJECT (-1)
 
 
 typedef struct {

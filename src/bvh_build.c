@@ -341,8 +341,13 @@ static void wide_fill(bvh_tree *t, int w, const int *lane, int n)
 			t->wide[w].box[2 * axis][i] = c ? (float)bvh_bound(c, 0, axis) : INFINITY;
 			t->wide[w].box[2 * axis + 1][i] = c ? (float)bvh_bound(c, 1, axis) : -INFINITY;
 		}
-		t->wide[w].count[i] = c ? c->count : 0;
-		t->wide[w].child[i] = !c ? -1 : c->count ? c->start : wide_collapse(t, lane[i]);
+		/* A leaf of one object (most leaves) names the object itself: the search
+		 * then skips a load from the index. */
+		t->wide[w].count[i] = !c ? 0 : c->count == 1 ? WIDE_ONE_OBJECT : c->count;
+		t->wide[w].child[i] = !c	      ? -1
+				      : c->count == 1 ? t->index[c->start]
+				      : c->count      ? c->start
+						      : wide_collapse(t, lane[i]);
 	}
 }
 #endif
