@@ -69,7 +69,14 @@ void cone_measure(const cone_shape *c, real *extent, real *feature)
 int cone_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h)
 {
 	const cone_shape *c = &o->u.cone;
-	vec3 f = vec_sub(r->origin, c->base);
+	/* The quadratic is set up from the point of the ray nearest the cone's base, not
+	 * from its origin: from a distant eye the terms below are of the size of the
+	 * distance squared, and the few that remain of the cone cancel away (as in the
+	 * textbook sphere test; numerics.md section 1). From that point they are of the
+	 * cone's own size; the roots are then distances from it. */
+	real shift = dir_dot_vec(r->dir, vec_sub(c->base, r->origin));
+	vec3 origin = dir_madd(r->origin, shift, r->dir);
+	vec3 f = vec_sub(origin, c->base);
 	real oh = dir_dot_vec(c->axis, f);
 	unit dh = dir_dot(r->dir, c->axis);
 	/* Components of origin and direction perpendicular to the axis. */
@@ -90,16 +97,18 @@ int cone_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h)
 			     &roots[1]))
 		return 0;
 	for (i = 0; i < 2; i++) {
-		real t = roots[i], height;
+		real t = real_add(shift, roots[i]), height;
 		vec3 p, radial, gradient;
 		dir3 normal;
 		if (!(t > tmin && t < tmax))
 			continue;
-		height = real_add(oh, real_mul_unit(t, dh));
+		height = real_add(oh, real_mul_unit(roots[i], dh));
 		/* The quadric is a double cone: keep the part between the two end circles. */
 		if (height < REAL_C(0.0) || height > c->length)
 			continue;
-		p = dir_madd(r->origin, t, r->dir);
+		/* From the nearer point too: o + t d from a distant eye keeps only the
+		 * eye's precision. */
+		p = dir_madd(origin, roots[i], r->dir);
 		radial = dir_madd(vec_sub(p, c->base), -height, c->axis);
 		/* Gradient of |radial|^2 - r(h)^2, halved: outward on the side wall. */
 		gradient = dir_madd(radial,

@@ -96,6 +96,17 @@ static const cone_case cases[] = {
 	{"inverted tip", {0, 0, 0}, {0, 0, 1}, 0, 1, TWO, {0, 0, -5}, {0, 0, 1}, 0, 1, 5,
 	 {0, 0, -1}},
 
+	/* From a distant eye (1,000 times the cylinder's radius), straight on and just
+	 * inside and outside its silhouette: the quadratic set up from the eye itself lost
+	 * the cylinder's size to the distance's square (float's step at 10^6 is 0.06). */
+	{"Y far", {0, 0, 0}, {0, 0, 2}, 1, 1, TWO, {-1000, 0, 1}, {1, 0, 0}, 0, 1, 999, {-1, 0, 0}},
+	{"Y far graze in", {0, 0, 0}, {0, 0, 2}, 1, 1, TWO, {-1000, CASE_C(0.99), 1}, {1, 0, 0}, 0,
+	 1, CASE_C(999.8589326402033), {CASE_C(-0.14106735979665894), CASE_C(0.99), 0}},
+	{"Y far graze out", {0, 0, 0}, {0, 0, 2}, 1, 1, TWO, {-1000, CASE_C(1.001), 1}, {1, 0, 0},
+	 0, 0, 0, {0, 0, 0}},
+	{"K far", {0, 0, 0}, {0, 0, 2}, 1, 0, TWO, {-1000, 0, 1}, {1, 0, 0}, 0, 1, CASE_C(999.5),
+	 {-2, 0, 1}},
+
 	/* NFF's negative radii: only the inside shows. From outside, the far wall. */
 	{"Y inside-only", {0, 0, 0}, {0, 0, 2}, 1, 1, INSIDE, {-5, 0, 1}, {1, 0, 0}, 0, 1, 6,
 	 {1, 0, 0}},
