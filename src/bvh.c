@@ -245,13 +245,13 @@ static inline real traverse(const scene *s, const bvh_tree *t, const ray *r, int
 				}                                                             \
 				pass = real_mul(pass, kt_);                                   \
 			}                                                                     \
-		} else if (BVH_WIDE && *found && visit_ < h->object) {                        \
+		} else if (*found && visit_ < h->object) {                                    \
 			/* A hit at the same distance as the nearest so far goes to the lower  \
 			 * index, as in the search object by object: coincident surfaces      \
 			 * then look the same whatever order the tree meets them in. */        \
 			hit tie_;                                                             \
-			if (object_intersect(s, visit_, r, REAL_C(0.0),                       \
-					     tmax + tmax * REAL_EPSILON, &tie_) &&            \
+			if (object_intersect(s, visit_, r, REAL_C(0.0), real_step_up(tmax),   \
+					     &tie_) &&                                        \
 			    tie_.t <= tmax) {                                                 \
 				*h = tie_;                                                    \
 				tmax = h->t;                                                  \

@@ -89,6 +89,7 @@ typedef int64_t real2; /* Q32.32: squares and products of lengths */
 #define REAL_C(x) ((real)((x) * 65536.0 + ((x) < 0 ? -0.5 : 0.5)))
 #define REAL_MAX ((real)0x7FFFFFFF)
 #define REAL_EPSILON ((real)1) /* one step, 2^-16 */
+#define real_step_up(x) fixed_add((x), 1) /* the next number above x */
 #define real_mul(a, b) fixed_mul((a), (b))
 #define real_add(a, b) fixed_add((a), (b))
 #define real_dot3(ax, ay, az, bx, by, bz) fixed_dot3((ax), (ay), (az), (bx), (by), (bz))
@@ -190,6 +191,8 @@ typedef real unit;
 #define REAL_SQUARES_UNDERFLOW 1 /* a number's square can round to 0 */
 #define REAL_SATURATES 0 /* see the Q16.16 block */
 #define REAL_FLOAT_FREE 0
+/* At or a step or two above the next number above x >= 0 (x itself at 0). */
+#define real_step_up(x) ((x) + (x) * REAL_EPSILON)
 #define real_mul(a, b) ((a) * (b))
 #define real_add(a, b) ((a) + (b))
 #define real_div(a, b) ((a) / (b))
