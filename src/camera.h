@@ -22,6 +22,7 @@ typedef struct {
 	real2 step[6];
 #else
 	real_reciprocal per_width; /* for dividing by the width: once here, not per ray */
+	int serial; /* which camera_init made it: the key of its column table (camera.c) */
 #endif
 } camera;
 
@@ -33,7 +34,7 @@ const char *camera_init(camera *c, const view *v, int width, int height);
 /* The eye rays of one image line, left to right: camera_line_at makes it for the line y2
  * half pixels from the top (2 j + 1 is the centre of pixel row j, 2 j its top edge),
  * starting x2 half pixels from the left; each camera_next_ray gives the next ray and
- * moves one pixel to the right. */
+ * moves one pixel to the right, as far as the image's right edge (x2 = 2 width). */
 typedef struct {
 	const camera *c;
 	int x2;      /* the next ray's x, in half pixels */
