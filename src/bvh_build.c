@@ -70,16 +70,37 @@ typedef struct {
 } build_item;
 static build_item items[RT_MAX_OBJECTS];
 
-/* The centre of an item's box, by which it is binned. */
-static inline vec3 item_centre(const build_item *o)
+/* An item's centre, by which it is binned and sorted: in floating types the sum of its
+ * corners in float, twice the centre (float arithmetic, and no scaling: binning the
+ * 1 M sphere scene in double took most of its build); in fixed point the midpoint (the
+ * sum could overflow). A centre is a point of the corners' own type. */
+#if BVH_WIDE
+typedef float centre_coord;
+static inline bvh_point item_centre(const build_item *o)
 {
-	return vec_scale(vec_add(point_vec(o->lo), point_vec(o->hi)), REAL_C(0.5));
+	bvh_point c;
+	c.x = o->lo.x + o->hi.x;
+	c.y = o->lo.y + o->hi.y;
+	c.z = o->lo.z + o->hi.z;
+	return c;
+}
+#else
+typedef real centre_coord;
+static inline bvh_point item_centre(const build_item *o)
+{
+	return vec_scale(vec_add(o->lo, o->hi), REAL_C(0.5));
+}
+#endif
+
+static inline centre_coord centre_get(bvh_point c, int axis)
+{
+	return axis == 0 ? c.x : axis == 1 ? c.y : c.z;
 }
 
 /* The box of some items and the box of their centres. */
 typedef struct {
 	bvh_point lo, hi;
-	vec3 clo, chi;
+	bvh_point clo, chi;
 } item_bounds;
 
 /* The bounds of items[first .. first+count). */
@@ -88,39 +109,48 @@ static item_bounds bounds_of(int first, int count)
 	item_bounds b;
 	int i;
 	points_empty(&b.lo, &b.hi);
-	box_empty(&b.clo, &b.chi);
+	points_empty(&b.clo, &b.chi);
 	for (i = 0; i < count; i++) {
 		const build_item *o = &items[first + i];
+		bvh_point centre = item_centre(o);
 		points_grow(&b.lo, &b.hi, &o->lo, &o->hi);
-		box_grow(&b.clo, &b.chi, item_centre(o));
+		points_grow(&b.clo, &b.chi, &centre, &centre);
 	}
 	return b;
 }
 
-/* The bin (0 .. BINS-1) of a centre at `offset` past the lowest centre, out of `extent`.
- * The comparison keeps a NaN or out-of-range quotient from reaching the int conversion. */
-static inline int bin_of(real offset, real extent)
+/* How one axis's centres fall into BINS bins: from the lowest centre `lo` over `extent`,
+ * by a product with `scale` = BINS / extent in floating types (the same product in the
+ * binning and in the partition, so both put an item in the same bin), by the quotient in
+ * fixed point (whose product rounds too coarsely). extent 0: one bin, not split. */
+typedef struct {
+	centre_coord lo, extent, scale;
+} axis_bins;
+
+static axis_bins axis_bins_make(bvh_point clo, bvh_point chi, int axis)
 {
-	real b = real_mul(real_div(offset, extent), real_from_int(BINS));
-	return b >= REAL_C(0.0) ? (b < real_from_int(BINS) ? real_to_int(b) : BINS - 1) : 0;
+	axis_bins a;
+	a.lo = centre_get(clo, axis);
+	a.extent = centre_get(chi, axis) - a.lo;
+#if BVH_WIDE
+	a.scale = a.extent > 0.0f ? (float)BINS / a.extent : 0.0f;
+#else
+	a.scale = 0;
+#endif
+	return a;
 }
 
-/* bin_of by a product with scale = BINS / extent, where that cannot decide otherwise:
- * the product and the quotient differ by a few roundings, so only an offset within
- * BIN_SLACK of a bin's edge takes the quotient, and every bin is bin_of's (the same
- * tree, a division per object and axis fewer: the 1 M sphere build took 1.8 s). Fixed
- * point keeps its quotient: its product rounds differently. */
-#define BIN_SLACK REAL_C(0.00001)
-static inline int bin_by_scale(real offset, real extent, real scale)
+/* The bin (0 .. BINS-1) of centre c. The comparisons keep a NaN or out-of-range value
+ * (centres beyond float's range) from reaching the int conversion. */
+static inline int bin_at(const axis_bins *a, centre_coord c)
 {
-	real b = real_mul(offset, scale);
-	if (!REAL_SATURATES && b >= REAL_C(0.0) && b < real_from_int(BINS)) {
-		int whole = real_to_int(b);
-		real part = b - real_from_int(whole);
-		if (part > BIN_SLACK && part < REAL_C(1.0) - BIN_SLACK)
-			return whole;
-	}
-	return bin_of(offset, extent);
+#if BVH_WIDE
+	float b = (c - a->lo) * a->scale;
+	return b >= 0.0f ? (b < (float)BINS ? (int)b : BINS - 1) : 0;
+#else
+	real b = real_mul(real_div(c - a->lo, a->extent), real_from_int(BINS));
+	return b >= REAL_C(0.0) ? (b < real_from_int(BINS) ? real_to_int(b) : BINS - 1) : 0;
+#endif
 }
 
 static real2 half_area(vec3 lo, vec3 hi)
@@ -129,6 +159,82 @@ static real2 half_area(vec3 lo, vec3 hi)
 	if (d.x < 0 || d.y < 0 || d.z < 0)
 		return 0;
 	return real_mul2(d.x, d.y) + real_mul2(d.y, d.z) + real_mul2(d.z, d.x);
+}
+
+/* Nodes of at most this many objects (most of a tree's nodes) are split by sorting their
+ * centres on each axis and pricing every plane between them: exact where binning is not,
+ * and with few objects far cheaper than sweeping BINS bins on three axes, which made
+ * nearly all of a small scene's build. Fixed point keeps its bins (1: no node is that
+ * small), so that its tree, and its images at the edge of its range, stay as they were. */
+#define SORTED_MAX (BVH_WIDE ? 16 : 1)
+
+/* The cost of a split, relative to a leaf's of one intersection per object: a traversal
+ * step plus each side's objects weighted by the chance that a ray entering the node
+ * enters that side (its area relative to the node's). */
+static real split_cost(real2 left_area, int left, real2 right_area, int right, real2 node_area)
+{
+	return REAL_C(0.5) + real_mul(real2_ratio(left_area, node_area), real_from_int(left)) +
+	       real_mul(real2_ratio(right_area, node_area), real_from_int(right));
+}
+
+/* sah_split for a node of at most SORTED_MAX objects: the objects are sorted by centre
+ * on each axis, every plane between two different centres is priced, and the objects
+ * are put in the best axis's order with the first `left` going left. */
+static int sorted_split(int first, int count, const item_bounds *node, int *axis_out,
+			item_bounds child[2])
+{
+	real2 node_area = half_area(point_vec(node->lo), point_vec(node->hi));
+	int order[3][SORTED_MAX];
+	real best_cost = REAL_MAX;
+	int best_axis = -1, best_left = 0, axis, i, j;
+	build_item sorted[SORTED_MAX];
+	for (axis = 0; axis < 3; axis++) {
+		centre_coord key[SORTED_MAX];
+		real2 right_area[SORTED_MAX];
+		bvh_point run_lo, run_hi;
+		/* Insertion sort: stable, and at this size the quickest. */
+		for (i = 0; i < count; i++) {
+			centre_coord k = centre_get(item_centre(&items[first + i]), axis);
+			for (j = i; j > 0 && key[j - 1] > k; j--) {
+				key[j] = key[j - 1];
+				order[axis][j] = order[axis][j - 1];
+			}
+			key[j] = k;
+			order[axis][j] = i;
+		}
+		points_empty(&run_lo, &run_hi);
+		for (i = count - 1; i > 0; i--) {
+			const build_item *o = &items[first + order[axis][i]];
+			points_grow(&run_lo, &run_hi, &o->lo, &o->hi);
+			right_area[i] = half_area(point_vec(run_lo), point_vec(run_hi));
+		}
+		points_empty(&run_lo, &run_hi);
+		for (i = 0; i < count - 1; i++) {
+			const build_item *o = &items[first + order[axis][i]];
+			real cost;
+			points_grow(&run_lo, &run_hi, &o->lo, &o->hi);
+			/* Equal centres stay together, as in a bin. */
+			if (!(key[i] < key[i + 1]))
+				continue;
+			cost = split_cost(half_area(point_vec(run_lo), point_vec(run_hi)), i + 1,
+					  right_area[i + 1], count - i - 1, node_area);
+			if (cost < best_cost) {
+				best_cost = cost;
+				best_axis = axis;
+				best_left = i + 1;
+			}
+		}
+	}
+	if (best_axis < 0 || (best_cost >= real_from_int(count) && count <= MAX_LEAF))
+		return 0;
+	for (i = 0; i < count; i++)
+		sorted[i] = items[first + order[best_axis][i]];
+	for (i = 0; i < count; i++)
+		items[first + i] = sorted[i];
+	child[0] = bounds_of(first, best_left);
+	child[1] = bounds_of(first + best_left, count - best_left);
+	*axis_out = best_axis;
+	return best_left;
 }
 
 /* Chooses the split of items[first .. first+count), whose bounds are `node`, with the
@@ -140,17 +246,15 @@ static int sah_split(int first, int count, const item_bounds *node, int *axis_ou
 		     item_bounds child[2])
 {
 	real2 node_area = half_area(point_vec(node->lo), point_vec(node->hi));
-	vec3 clo = node->clo, chi = node->chi;
-	real best_cost, lo[3], extent[3], scale[3];
+	real best_cost;
+	axis_bins bins[3];
 	int bin_count[3][BINS];
 	bvh_point bin_lo[3][BINS], bin_hi[3][BINS];
 	int best_axis = -1, best_plane = 0, axis, i, left;
+	if (count <= SORTED_MAX)
+		return sorted_split(first, count, node, axis_out, child);
 	for (axis = 0; axis < 3; axis++) {
-		lo[axis] = vec_get(clo, axis);
-		extent[axis] = vec_get(chi, axis) - lo[axis];
-		scale[axis] = extent[axis] > REAL_C(0.0) && !REAL_SATURATES
-				      ? real_div(real_from_int(BINS), extent[axis])
-				      : REAL_C(0.0);
+		bins[axis] = axis_bins_make(node->clo, node->chi, axis);
 		for (i = 0; i < BINS; i++) {
 			bin_count[axis][i] = 0;
 			points_empty(&bin_lo[axis][i], &bin_hi[axis][i]);
@@ -159,24 +263,22 @@ static int sah_split(int first, int count, const item_bounds *node, int *axis_ou
 	/* One pass over the objects bins them on all three axes. */
 	for (i = 0; i < count; i++) {
 		const build_item *o = &items[first + i];
-		vec3 centre = item_centre(o);
+		bvh_point centre = item_centre(o);
 		for (axis = 0; axis < 3; axis++) {
 			int b;
-			if (!(extent[axis] > REAL_C(0.0)))
+			if (!(bins[axis].extent > 0))
 				continue;
-			b = bin_by_scale(vec_get(centre, axis) - lo[axis], extent[axis], scale[axis]);
+			b = bin_at(&bins[axis], centre_get(centre, axis));
 			bin_count[axis][b]++;
 			points_grow(&bin_lo[axis][b], &bin_hi[axis][b], &o->lo, &o->hi);
 		}
 	}
-	/* Leaf cost: one intersection per object; a split costs one traversal step plus the
-	 * children's objects weighted by the chance of entering each. */
 	best_cost = REAL_MAX;
 	for (axis = 0; axis < 3; axis++) {
 		bvh_point run_lo, run_hi;
 		real2 right_area[BINS];
 		int right_count[BINS], n;
-		if (!(extent[axis] > REAL_C(0.0)))
+		if (!(bins[axis].extent > 0))
 			continue;
 		/* Sweep from the right, then from the left, pricing each plane between bins.
 		 * An empty bin's box is inside out (+MAX..-MAX) and must not be grown by. */
@@ -203,14 +305,8 @@ static int sah_split(int first, int count, const item_bounds *node, int *axis_ou
 			 * node, where the pricing is most of the work. */
 			if (n == 0 || right_count[i + 1] == 0 || !bin_count[axis][i])
 				continue;
-			/* Areas relative to the node's: the chance that a ray entering the node
-			 * enters each child. */
-			cost = REAL_C(0.5) +
-			       real_mul(real2_ratio(half_area(point_vec(run_lo), point_vec(run_hi)),
-						    node_area),
-					real_from_int(n)) +
-			       real_mul(real2_ratio(right_area[i + 1], node_area),
-					real_from_int(right_count[i + 1]));
+			cost = split_cost(half_area(point_vec(run_lo), point_vec(run_hi)), n,
+					  right_area[i + 1], right_count[i + 1], node_area);
 			if (cost < best_cost) {
 				best_cost = cost;
 				best_axis = axis;
@@ -224,7 +320,7 @@ static int sah_split(int first, int count, const item_bounds *node, int *axis_ou
 	/* Each side's box is the union of its bins' boxes. */
 	for (i = 0; i < 2; i++) {
 		points_empty(&child[i].lo, &child[i].hi);
-		box_empty(&child[i].clo, &child[i].chi);
+		points_empty(&child[i].clo, &child[i].chi);
 	}
 	for (i = 0; i < BINS; i++)
 		if (bin_count[best_axis][i])
@@ -236,10 +332,10 @@ static int sah_split(int first, int count, const item_bounds *node, int *axis_ou
 		int j = first + count - 1;
 		i = first;
 		while (i <= j) {
-			vec3 centre = item_centre(&items[i]);
-			int b = bin_by_scale(vec_get(centre, best_axis) - lo[best_axis],
-					     extent[best_axis], scale[best_axis]);
-			box_grow(&child[b > best_plane].clo, &child[b > best_plane].chi, centre);
+			bvh_point centre = item_centre(&items[i]);
+			int b = bin_at(&bins[best_axis], centre_get(centre, best_axis));
+			points_grow(&child[b > best_plane].clo, &child[b > best_plane].chi, &centre,
+				    &centre);
 			if (b <= best_plane) {
 				i++;
 			} else {

@@ -302,6 +302,105 @@ static void test_coincident_boxes(void)
 	CHECK(hits > 15000);
 	CHECK_INT(mismatches, 0);
 }
+/* Checks the binary tree of the scene in `s` for its shape: every bounded object in
+ * exactly one leaf, every box holding its children's (and a leaf's its objects'), and no
+ * leaf of more than four objects unless their centres coincide. Returns the leaves. */
+static int check_tree(const bvh_tree *t, const char *what)
+{
+	static unsigned char seen[RT_MAX_OBJECTS];
+	int i, axis, leaves = 0, bad_boxes = 0, big_leaves = 0, missing = 0;
+	for (i = 0; i < s.object_count; i++)
+		seen[i] = 0;
+	for (i = 0; i < t->unbounded_count; i++)
+		seen[t->index[i]]++;
+	for (i = 0; i < t->node_count; i++) {
+		const bvh_node *n = &t->nodes[i];
+		int k, first = n->count ? n->start : -1, count = n->count;
+		if (!count) {
+			/* Both children inside the parent. */
+			for (k = 0; k < 2; k++)
+				for (axis = 0; axis < 3; axis++)
+					bad_boxes += bvh_bound(&t->nodes[n->start + k], 0, axis) <
+							     bvh_bound(n, 0, axis) ||
+						     bvh_bound(&t->nodes[n->start + k], 1, axis) >
+							     bvh_bound(n, 1, axis);
+			continue;
+		}
+		leaves++;
+		big_leaves += count > 4;
+		for (k = first; k < first + count; k++) {
+			vec3 lo, hi;
+			int o = t->index[k];
+			seen[o]++;
+			if (!shape_bounds(&s, &s.objects[o], &lo, &hi))
+				continue;
+			for (axis = 0; axis < 3; axis++)
+				bad_boxes += vec_get(lo, axis) < bvh_bound(n, 0, axis) ||
+					     vec_get(hi, axis) > bvh_bound(n, 1, axis);
+		}
+	}
+	for (i = 0; i < s.object_count; i++)
+		missing += seen[i] != 1;
+	if (bad_boxes || big_leaves || missing)
+		printf("  %s: %d boxes not holding, %d leaves over 4, %d objects not once\n", what,
+		       bad_boxes, big_leaves, missing);
+	CHECK_INT(bad_boxes, 0);
+	CHECK_INT(big_leaves, 0);
+	CHECK_INT(missing, 0);
+	return leaves;
+}
+
+/* Spheres of `count` at random centres in a cube of side `size` around `centre`, radii
+ * from 1/1000 to 1/10 of it (with one_centre, all at the centre itself). */
+static int sphere_scene(int count, double centre, double size, int one_centre)
+{
+	static char text[1 << 20];
+	int i, at = snprintf(text, sizeof text,
+			     "v\nfrom 0 0 -10\nat 0 0 0\nup 0 1 0\nangle 40\nhither 0.01\n"
+			     "resolution 8 8\nl 0 5 -5\nf 1 0 0 1 0 0 0 1\n");
+	for (i = 0; i < count && at > 0 && at < (int)sizeof text; i++) {
+		double x = one_centre ? 0.0 : test_random_range(-0.5, 0.5) * size;
+		double y = one_centre ? 0.0 : test_random_range(-0.5, 0.5) * size;
+		double z = one_centre ? 0.0 : test_random_range(-0.5, 0.5) * size;
+		at += snprintf(text + at, sizeof text - (size_t)at, "s %.17g %.17g %.17g %.17g\n",
+			       centre + x, centre + y, centre + z,
+			       size * test_random_range(0.001, 0.1));
+	}
+	return CHECK(at > 0 && at < (int)sizeof text) &&
+	       CHECK(test_parse_buffer(&s, "spheres.nff", text, NULL, NULL));
+}
+
+/* The tree's shape for scenes that take each of the build's ways: nodes split by bins
+ * and by sorting (a few objects, a few over the sorted limit, thousands), all centres in
+ * one place (split in halves), centres far from the origin where float's steps are
+ * coarse (Q16.16: the edge of its range). */
+static void test_tree_shape(void)
+{
+	static const struct {
+		int count;
+		double centre, size;
+		int one_centre;
+	} cases[] = {{12, 0.0, 10.0, 0},	     {17, 0.0, 10.0, 0},   {33, 0.0, 10.0, 0},
+		     {3000, 0.0, 10.0, 0},   {40, 0.0, 10.0, 1},   {300, 0.0, 1e-3, 0},
+		     {300, 1e6, 1.0, 0},     {300, -2000.0, 100.0, 0}};
+	int c, leaves;
+	test_seed(19);
+	for (c = 0; c < (int)(sizeof cases / sizeof cases[0]); c++) {
+		const accel *tree;
+		char what[64];
+		if (REAL_FIXED && (cases[c].centre > 30000.0 || cases[c].size < 0.01))
+			continue;
+		if (!sphere_scene(cases[c].count, cases[c].centre, cases[c].size, cases[c].one_centre))
+			return;
+		tree = test_accel(&s, 1);
+		snprintf(what, sizeof what, "%d spheres at %g", cases[c].count, cases[c].centre);
+		if (!CHECK(tree->tree.node_count > 0))
+			continue;
+		leaves = check_tree(&tree->tree, what);
+		/* A leaf holds one to four objects. */
+		CHECK(leaves * 4 >= cases[c].count && leaves <= cases[c].count);
+	}
+}
 #endif
 
 void suite_bvh(void)
@@ -312,5 +411,6 @@ void suite_bvh(void)
 	test_nonplanar_polygon();
 	test_flat_roof();
 	test_coincident_boxes();
+	test_tree_shape();
 #endif
 }
