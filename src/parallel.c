@@ -304,6 +304,23 @@ static int receive(const job *jb, worker *w, int end)
 	return 1;
 }
 
+/* Takes every result worker w has sent so far (one at least: it is ready). Taking one a
+ * round left the others waiting in the socket while the parent traced its next line,
+ * and the worker, its units done, idle: one line for each of the parent's, however much
+ * cheaper its own. 0 as receive. */
+static int receive_all(const job *jb, worker *w, int end)
+{
+	struct pollfd more;
+	more.fd = w->socket;
+	more.events = POLLIN;
+	do {
+		if (!receive(jb, w, end))
+			return 0;
+		more.revents = 0;
+	} while (w->in_flight > 0 && poll(&more, 1, 0) > 0 && more.revents);
+	return 1;
+}
+
 /* Sends worker w a unit; a row's two corner lines after it. 0 if the worker has ended. */
 static int hand_out(const job *jb, worker *w, int kind, int index)
 {
@@ -461,7 +478,7 @@ int render_parallel(tracer *t, const camera *c, enum render_sampling sampling,
 			return -1;
 		}
 		for (k = 0; culprit < 0 && k < count; k++)
-			if (ready[k].revents && !receive(&jb, &workers[waiting[k]], end))
+			if (ready[k].revents && !receive_all(&jb, &workers[waiting[k]], end))
 				culprit = waiting[k];
 		if (culprit >= 0) {
 			finish_workers(1, culprit);
