@@ -177,6 +177,13 @@ static real split_cost(real2 left_area, int left, real2 right_area, int right, r
 	       real_mul(real2_ratio(right_area, node_area), real_from_int(right));
 }
 
+/* Whether a node stays a leaf: no plane parts its objects, or the best costs no less than
+ * the leaf and the leaf is small enough. */
+static int leaf_is_better(int best_axis, real best_cost, int count)
+{
+	return best_axis < 0 || (best_cost >= real_from_int(count) && count <= MAX_LEAF);
+}
+
 /* sah_split for a node of at most SORTED_MAX objects: the objects are sorted by centre
  * on each axis, every plane between two different centres is priced, and the objects
  * are put in the best axis's order with the first `left` going left. */
@@ -225,7 +232,7 @@ static int sorted_split(int first, int count, const item_bounds *node, int *axis
 			}
 		}
 	}
-	if (best_axis < 0 || (best_cost >= real_from_int(count) && count <= MAX_LEAF))
+	if (leaf_is_better(best_axis, best_cost, count))
 		return 0;
 	for (i = 0; i < count; i++)
 		sorted[i] = items[first + order[best_axis][i]];
@@ -314,8 +321,7 @@ static int sah_split(int first, int count, const item_bounds *node, int *axis_ou
 			}
 		}
 	}
-	/* Keep a leaf when that is cheaper, unless it would be too big. */
-	if (best_axis < 0 || (best_cost >= real_from_int(count) && count <= MAX_LEAF))
+	if (leaf_is_better(best_axis, best_cost, count))
 		return 0;
 	/* Each side's box is the union of its bins' boxes. */
 	for (i = 0; i < 2; i++) {

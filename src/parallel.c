@@ -316,8 +316,7 @@ static int receive_all(const job *jb, worker *w, int end)
 	do {
 		if (!receive(jb, w, end))
 			return 0;
-		more.revents = 0;
-	} while (w->in_flight > 0 && poll(&more, 1, 0) > 0 && more.revents);
+	} while (w->in_flight > 0 && poll(&more, 1, 0) > 0);
 	return 1;
 }
 
