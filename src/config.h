@@ -51,9 +51,10 @@
 #define RT_MAX_MEDIA 8 /* nested transmitting objects a ray can be inside at once */
 #endif
 #ifndef RT_PARALLEL_POOL
-/* -j's window, in colours (and as many ids): three lines a process, and two more, of the
- * image's width; 2^19 holds 64 processes to 2,700 pixels wide, 21 at 8,192. */
-#define RT_PARALLEL_POOL (1L << 19)
+/* -j's window at most, in colours (and as many ids): four lines a process, and two more,
+ * of the image's width (twice that with -a), mapped for the render only as large as it
+ * needs; 2^20 holds 64 processes to 4,000 pixels wide, 31 at 8,192. */
+#define RT_PARALLEL_POOL (1L << 20)
 #endif
 #ifndef RT_TOKEN_MAX
 #define RT_TOKEN_MAX 64 /* longest token in a scene file, in bytes */

@@ -4,14 +4,19 @@
  * them copy-on-write, and nothing is built twice. The parent hands out sample lines
  * (render_line's) by number, at most UNITS_PER_WORKER to a worker at once, so a worker
  * that finishes early takes the next line and none idles while lines are left (a mirror
- * in one corner makes some lines ten times the cost of others). Each worker sends its
- * lines back over its own socket. The parent keeps them in a window of a few lines per
- * worker, puts the rows together in order as render_image does (the corner means
- * included), and hands each row to the sink as soon as it and every row above it are
- * done: the output streams, and memory is the window's, whatever the image's height.
+ * in one corner makes some lines ten times the cost of others). The lines go into a
+ * window of a few lines a process, mapped before the fork and so shared with the workers:
+ * a worker traces straight into its line's slot and sends back over its own socket only
+ * the line's number and its counts. The parent puts the rows together in order as
+ * render_image does (the corner means included), and hands each row to the sink as soon
+ * as it and every row above it are done: the output streams, and memory is the window's,
+ * whatever the image's height.
  *
  * Processes, not threads: the tracer's caches, render.c's rows and the ray counters are
- * each worker's own, so nothing is shared and nothing needs a lock (C99 has no threads).
+ * each worker's own, and a slot of the window is written only by the process its line
+ * (or row) was handed to, before that process says so over its socket: nothing needs a
+ * lock (C99 has no threads). The kernel's send and receive order the slot's writes
+ * before the parent's reads, as its locks on the socket order memory.
  * A line depends on its number alone (render.h), so the bytes are those of -j 1 whichever
  * worker traced it.
  *
@@ -21,6 +26,7 @@
  * that ends early fails the render with one message.
  * See LICENSE for copyright and licence. */
 #define _POSIX_C_SOURCE 200809L
+#define _DEFAULT_SOURCE 1 /* MAP_ANONYMOUS, which POSIX names only from its 2024 issue */
 
 #include "parallel.h"
 
@@ -28,6 +34,7 @@
 #include <poll.h>
 #include <signal.h>
 #include <string.h>
+#include <sys/mman.h>
 #include <sys/socket.h>
 #include <sys/types.h>
 #include <sys/wait.h>
@@ -37,21 +44,27 @@
 #include "diag.h"
 #include "output.h"
 
-/* Units a worker holds at once: the one it works on and the next, so that it never waits
- * for the parent between them. */
-#define UNITS_PER_WORKER 2
+#if !defined(MAP_ANONYMOUS) && defined(MAP_ANON)
+#define MAP_ANONYMOUS MAP_ANON
+#endif
 
-/* The parent's window of lines (and, with -a, of rows), a pool of colours: each slot
- * holds a line of width + 1 colours and ids, and with -a the row refined from it too;
- * the window has 2 slots per worker and 2 more, so the pool's size (RT_PARALLEL_POOL,
- * 12 MiB in double) caps -j at the widest images. */
-static vec3 pool[RT_PARALLEL_POOL];
-static int pool_ids[RT_PARALLEL_POOL];
+/* Units a worker holds at once: the one it works on and two more, so that it does not
+ * wait while the parent traces a line of its own that costs more than the worker's next
+ * (with two, balls' worker waited for the parent 70-90 times a render, 2-3 ms in all). */
+#define UNITS_PER_WORKER 3
+
+/* The window of lines (and, with -a, of rows): colours and as many ids, shared with the
+ * workers. Each slot holds a line of width + 1 colours and ids, and with -a the row
+ * refined from it too; there are WINDOW_PER_JOB slots a process and 2 more, at most
+ * RT_PARALLEL_POOL colours (24 MiB in double), which caps -j at the widest images. */
+static vec3 *pool;
+static int *pool_ids;
+static size_t pool_bytes; /* the mapping's size; 0: none */
 static int no_ids[RT_MAX_WIDTH]; /* -a's rows: four or more rays a pixel, no one object */
 
 /* The window's most slots: lines may run ahead of the row that leaves next by up to
- * WINDOW_PER_JOB a process (a worker's two units and the parent's one). */
-#define WINDOW_PER_JOB 3
+ * WINDOW_PER_JOB a process (a worker's units and the parent's one). */
+#define WINDOW_PER_JOB (UNITS_PER_WORKER + 1)
 #define WINDOW_MAX (PARALLEL_MAX_JOBS * WINDOW_PER_JOB + 2)
 
 enum unit_kind {
@@ -60,7 +73,7 @@ enum unit_kind {
 };
 
 /* A unit of work, as the parent sends it; and, with the worker's counts so far, as the
- * worker sends back what it made: a line's colours and ids, or a row's colours. */
+ * worker sends it back when its line or row is in the window. */
 typedef struct {
 	int kind;
 	int index;
@@ -86,7 +99,6 @@ typedef struct {
 	enum render_sampling sampling;
 	const antialias *aa;   /* NULL: none */
 	int corners;           /* lines of corners (--spd, -a) */
-	int ids;               /* lines carry their ids (not --spd's corners, whose means have none) */
 	size_t line_length;    /* colours in a line: the width, + 1 for corners */
 	size_t slot_length;    /* colours in a slot */
 } job;
@@ -139,37 +151,83 @@ static int send_full(int fd, const void *data, size_t n, int flags)
 	return 1;
 }
 
-/* The worker's life: units in, results out, until the parent closes its end. */
+/* The window: slot k holds line y0 + k + m window for some m, and with -a the row of the
+ * same number; a flag for each (done, and for rows also handed out). */
+static struct {
+	int first, size; /* the first line's number; slots */
+	unsigned char line_done[WINDOW_MAX];
+	unsigned char row_sent[WINDOW_MAX];
+	unsigned char row_done[WINDOW_MAX];
+} window;
+
+static int slot_of(int index)
+{
+	return (index - window.first) % window.size;
+}
+
+static vec3 *line_colours(const job *jb, int index)
+{
+	return pool + (size_t)slot_of(index) * jb->slot_length;
+}
+
+static int *line_ids(const job *jb, int index)
+{
+	return pool_ids + (size_t)slot_of(index) * jb->slot_length;
+}
+
+/* With -a a slot's row follows its line. */
+static vec3 *row_colours(const job *jb, int index)
+{
+	return line_colours(jb, index) + jb->line_length;
+}
+
+/* Maps a window of `slots` slots of jb's, shared with the processes forked after. 0, with
+ * errno, when it cannot. */
+static int share_window(const job *jb, int slots)
+{
+	size_t colours = (size_t)slots * jb->slot_length;
+	size_t bytes = colours * (sizeof(vec3) + sizeof(int));
+	void *mapped = mmap(NULL, bytes, PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0);
+	if (mapped == MAP_FAILED)
+		return 0;
+	pool = mapped;
+	/* The ids after the colours: at a multiple of sizeof(vec3), aligned for an int. */
+	pool_ids = (int *)(void *)((unsigned char *)mapped + colours * sizeof(vec3));
+	pool_bytes = bytes;
+	return 1;
+}
+
+static void unshare_window(void)
+{
+	if (pool_bytes)
+		munmap(pool, pool_bytes);
+	pool = NULL;
+	pool_ids = NULL;
+	pool_bytes = 0;
+}
+
+/* Traces a unit into its slot of the window: line y, or (-a) row y refined from its two
+ * corner lines, which are in the window already. */
+static void do_unit(const job *jb, tracer *t, int kind, int y)
+{
+	if (kind == UNIT_LINE)
+		render_line(t, jb->c, jb->sampling, y, line_colours(jb, y), line_ids(jb, y));
+	else
+		antialias_row(t, jb->c, jb->aa, y, line_colours(jb, y), line_ids(jb, y),
+			      line_colours(jb, y + 1), line_ids(jb, y + 1), row_colours(jb, y));
+}
+
+/* The worker's life: units in, done, back with the counts so far, until the parent
+ * closes its end. */
 static void work(const job *jb, int fd)
 {
-	static vec3 colours[2][RT_MAX_WIDTH + 1];
-	static int ids[2][RT_MAX_WIDTH + 1];
-	static vec3 pixels[RT_MAX_WIDTH];
-	size_t n = jb->line_length;
 	work_unit u;
 	memset(&u, 0, sizeof u); /* its padding too: all of it is sent */
 	memset(&jb->t->stats, 0, sizeof jb->t->stats);
 	while (read_full(fd, &u, sizeof u)) {
-		int ok;
-		if (u.kind == UNIT_LINE) {
-			render_line(jb->t, jb->c, jb->sampling, u.index, colours[0], ids[0]);
-		} else {
-			if (!read_full(fd, colours[0], n * sizeof(vec3)) ||
-			    !read_full(fd, ids[0], n * sizeof(int)) ||
-			    !read_full(fd, colours[1], n * sizeof(vec3)) ||
-			    !read_full(fd, ids[1], n * sizeof(int)))
-				_exit(1);
-			antialias_row(jb->t, jb->c, jb->aa, u.index, colours[0], ids[0], colours[1], ids[1],
-				      pixels);
-		}
+		do_unit(jb, jb->t, u.kind, u.index);
 		u.stats = jb->t->stats;
-		ok = send_full(fd, &u, sizeof u, 0);
-		if (u.kind == UNIT_LINE)
-			ok = ok && send_full(fd, colours[0], n * sizeof(vec3), 0) &&
-			     (!jb->ids || send_full(fd, ids[0], n * sizeof(int), 0));
-		else
-			ok = ok && send_full(fd, pixels, (n - 1) * sizeof(vec3), 0);
-		if (!ok)
+		if (!send_full(fd, &u, sizeof u, 0))
 			_exit(1);
 	}
 	_exit(0);
@@ -243,42 +301,13 @@ static int finish_workers(int stop, int culprit)
 	}
 	worker_count = 0;
 	output_on_end(NULL);
+	unshare_window();
 	return fine;
 }
 
-/* The window: slot k holds line y0 + k + m window for some m, and with -a the row of the
- * same number; a flag for each (done, and for rows also handed out). */
-static struct {
-	int first, size; /* the first line's number; slots */
-	unsigned char line_done[WINDOW_MAX];
-	unsigned char row_sent[WINDOW_MAX];
-	unsigned char row_done[WINDOW_MAX];
-} window;
-
-static int slot_of(int index)
-{
-	return (index - window.first) % window.size;
-}
-
-static vec3 *line_colours(const job *jb, int index)
-{
-	return pool + (size_t)slot_of(index) * jb->slot_length;
-}
-
-static int *line_ids(const job *jb, int index)
-{
-	return pool_ids + (size_t)slot_of(index) * jb->slot_length;
-}
-
-/* With -a a slot's row follows its line. */
-static vec3 *row_colours(const job *jb, int index)
-{
-	return line_colours(jb, index) + jb->line_length;
-}
-
-/* Takes one result from worker w into the window. 0 when the worker has ended or sent
- * what it was not asked for. */
-static int receive(const job *jb, worker *w, int end)
+/* Takes one result from worker w: its line or row is in the window. 0 when the worker
+ * has ended or says it did what it was not asked to. */
+static int receive(worker *w, int end)
 {
 	work_unit u;
 	int slot;
@@ -286,16 +315,11 @@ static int receive(const job *jb, worker *w, int end)
 		return 0;
 	slot = slot_of(u.index);
 	if (u.kind == UNIT_LINE) {
-		if (window.line_done[slot] ||
-		    !read_full(w->socket, line_colours(jb, u.index), jb->line_length * sizeof(vec3)) ||
-		    (jb->ids &&
-		     !read_full(w->socket, line_ids(jb, u.index), jb->line_length * sizeof(int))))
+		if (window.line_done[slot])
 			return 0;
 		window.line_done[slot] = 1;
 	} else {
-		if (u.kind != UNIT_ROW || !window.row_sent[slot] || window.row_done[slot] ||
-		    !read_full(w->socket, row_colours(jb, u.index),
-			       (jb->line_length - 1) * sizeof(vec3)))
+		if (u.kind != UNIT_ROW || !window.row_sent[slot] || window.row_done[slot])
 			return 0;
 		window.row_done[slot] = 1;
 	}
@@ -308,36 +332,26 @@ static int receive(const job *jb, worker *w, int end)
  * round left the others waiting in the socket while the parent traced its next line,
  * and the worker, its units done, idle: one line for each of the parent's, however much
  * cheaper its own. 0 as receive. */
-static int receive_all(const job *jb, worker *w, int end)
+static int receive_all(worker *w, int end)
 {
 	struct pollfd more;
 	more.fd = w->socket;
 	more.events = POLLIN;
 	do {
-		if (!receive(jb, w, end))
+		if (!receive(w, end))
 			return 0;
 	} while (w->in_flight > 0 && poll(&more, 1, 0) > 0);
 	return 1;
 }
 
-/* Sends worker w a unit; a row's two corner lines after it. 0 if the worker has ended. */
-static int hand_out(const job *jb, worker *w, int kind, int index)
+/* Sends worker w a unit. 0 if the worker has ended. */
+static int hand_out(worker *w, int kind, int index)
 {
 	work_unit u;
-	size_t n = jb->line_length;
 	memset(&u, 0, sizeof u);
 	u.kind = kind;
 	u.index = index;
 	if (!send_full(w->socket, &u, sizeof u, MSG_NOSIGNAL))
-		return 0;
-	if (kind == UNIT_ROW && (!send_full(w->socket, line_colours(jb, index), n * sizeof(vec3),
-					    MSG_NOSIGNAL) ||
-				 !send_full(w->socket, line_ids(jb, index), n * sizeof(int),
-					    MSG_NOSIGNAL) ||
-				 !send_full(w->socket, line_colours(jb, index + 1),
-					    n * sizeof(vec3), MSG_NOSIGNAL) ||
-				 !send_full(w->socket, line_ids(jb, index + 1), n * sizeof(int),
-					    MSG_NOSIGNAL)))
 		return 0;
 	w->in_flight++;
 	return 1;
@@ -365,27 +379,33 @@ static int row_ready(const job *jb, int y)
 	return window.line_done[slot_of(y)] && (!jb->corners || window.line_done[slot_of(y + 1)]);
 }
 
-/* The parent's own share of the work, between looking after the workers: a row to
- * refine (-a) whose lines are in, else the next line inside the window, traced straight
- * into its slot with the parent's tracer. Returns 0 when there is none to take. */
-static int work_here(const job *jb, tracer *here, int *next_line, int *next_row, int row,
-		     int end, int y1)
+/* The next unit to hand out, into *kind and *index: with -a a row whose corner lines are
+ * both in (rows let the output move on), else the next line inside the window. 0 when
+ * there is none. */
+static int next_unit(const job *jb, int next_line, int next_row, int row, int end, int y1,
+		     int *kind, int *index)
 {
-	if (jb->aa && *next_row < y1 && *next_row + 1 < *next_line &&
-	    window.line_done[slot_of(*next_row)] && window.line_done[slot_of(*next_row + 1)]) {
-		int y = (*next_row)++;
-		antialias_row(here, jb->c, jb->aa, y, line_colours(jb, y), line_ids(jb, y),
-			      line_colours(jb, y + 1), line_ids(jb, y + 1), row_colours(jb, y));
-		window.row_sent[slot_of(y)] = window.row_done[slot_of(y)] = 1;
+	if (jb->aa && next_row < y1 && next_row + 1 < next_line &&
+	    window.line_done[slot_of(next_row)] && window.line_done[slot_of(next_row + 1)]) {
+		*kind = UNIT_ROW;
+		*index = next_row;
 		return 1;
 	}
-	if (*next_line < end && *next_line < row + window.size) {
-		int y = (*next_line)++;
-		render_line(here, jb->c, jb->sampling, y, line_colours(jb, y), line_ids(jb, y));
-		window.line_done[slot_of(y)] = 1;
+	if (next_line < end && next_line < row + window.size) {
+		*kind = UNIT_LINE;
+		*index = next_line;
 		return 1;
 	}
 	return 0;
+}
+
+/* Marks unit (kind, index) handed out: the next row or line. */
+static void take_unit(int kind, int *next_line, int *next_row)
+{
+	if (kind == UNIT_ROW)
+		window.row_sent[slot_of((*next_row)++)] = 1;
+	else
+		(*next_line)++;
 }
 
 int render_parallel(tracer *t, const camera *c, enum render_sampling sampling,
@@ -403,7 +423,6 @@ int render_parallel(tracer *t, const camera *c, enum render_sampling sampling,
 	jb.sampling = aa ? SAMPLE_CORNERS : sampling;
 	jb.aa = aa;
 	jb.corners = RT_CORNER_SAMPLING && jb.sampling == SAMPLE_CORNERS;
-	jb.ids = !jb.corners || aa;
 	jb.line_length = (size_t)c->width + (size_t)jb.corners;
 	jb.slot_length = jb.line_length * (aa ? 2 : 1);
 	end = y1 + jb.corners; /* lines [y0, end) make rows [y0, y1) */
@@ -411,11 +430,17 @@ int render_parallel(tracer *t, const camera *c, enum render_sampling sampling,
 	fitting = (int)((RT_PARALLEL_POOL / (long)jb.slot_length - 2) / WINDOW_PER_JOB);
 	jobs = jobs < end - y0 ? jobs : end - y0;
 	jobs = jobs < fitting ? jobs : fitting;
-	if (jobs <= 1)
+	window.first = y0;
+	window.size = jobs * WINDOW_PER_JOB + 2;
+	/* Without a shared window (a system that refuses the mapping) one process renders:
+	 * the same bytes. */
+	if (jobs <= 1 || !share_window(&jb, window.size))
 		return aa ? render_adaptive(t, c, aa, y0, y1, out, progress, progress_ctx)
 			  : render_image(t, c, sampling, y0, y1, out, progress, progress_ctx);
-	if (!out->begin(out, c->width, y1 - y0))
+	if (!out->begin(out, c->width, y1 - y0)) {
+		unshare_window();
 		return 0;
+	}
 	for (i = 0; i < c->width; i++)
 		no_ids[i] = -1;
 	trace_copy(&here, t);
@@ -425,44 +450,38 @@ int render_parallel(tracer *t, const camera *c, enum render_sampling sampling,
 	if (worker_count == 0) {
 		diag_error(NULL, 0, "cannot start a worker process: %s", strerror(errno));
 		output_on_end(NULL);
+		unshare_window();
 		return -1;
 	}
-	window.first = y0;
-	window.size = (worker_count + 1) * WINDOW_PER_JOB + 2;
 	memset(window.line_done, 0, sizeof window.line_done);
 	memset(window.row_sent, 0, sizeof window.row_sent);
 	memset(window.row_done, 0, sizeof window.row_done);
 	while (row < y1) {
 		struct pollfd ready[PARALLEL_MAX_JOBS];
-		int waiting[PARALLEL_MAX_JOBS], count = 0, culprit = -1, busy;
-		/* With -a, rows whose corner lines are both in go first, each to a worker with
-		 * nothing to do (which is reading, so the lines sent after it cannot fill the
-		 * socket while that worker sends): they let the output move on. */
-		for (i = 0; aa && i < worker_count && next_row < y1; i++)
-			if (workers[i].in_flight == 0 && next_row + 1 < next_line &&
-			    window.line_done[slot_of(next_row)] &&
-			    window.line_done[slot_of(next_row + 1)]) {
-				if (!hand_out(&jb, &workers[i], UNIT_ROW, next_row)) {
-					culprit = i;
-					break;
-				}
-				window.row_sent[slot_of(next_row++)] = 1;
-			}
-		/* Lines to every worker with room, one each in turn, inside the window. */
+		int waiting[PARALLEL_MAX_JOBS], count = 0, culprit = -1, busy = 0, kind, index;
+		/* Units to every worker with room, one each in turn. */
 		for (k = 1; culprit < 0 && k <= UNITS_PER_WORKER; k++)
-			for (i = 0; i < worker_count && next_line < end && next_line < row + window.size;
-			     i++) {
+			for (i = 0; culprit < 0 && i < worker_count; i++) {
 				if (workers[i].in_flight >= k)
 					continue;
-				if (!hand_out(&jb, &workers[i], UNIT_LINE, next_line)) {
-					culprit = i;
+				if (!next_unit(&jb, next_line, next_row, row, end, y1, &kind, &index))
 					break;
-				}
-				next_line++;
+				if (!hand_out(&workers[i], kind, index))
+					culprit = i;
+				else
+					take_unit(kind, &next_line, &next_row);
 			}
 		/* A unit here; then a look at the workers without waiting, or, with nothing
 		 * left here, a wait for them. */
-		busy = culprit < 0 && work_here(&jb, &here, &next_line, &next_row, row, end, y1);
+		if (culprit < 0 && next_unit(&jb, next_line, next_row, row, end, y1, &kind, &index)) {
+			take_unit(kind, &next_line, &next_row);
+			do_unit(&jb, &here, kind, index);
+			if (kind == UNIT_ROW)
+				window.row_done[slot_of(index)] = 1;
+			else
+				window.line_done[slot_of(index)] = 1;
+			busy = 1;
+		}
 		for (i = 0; culprit < 0 && i < worker_count; i++)
 			if (workers[i].in_flight > 0) {
 				ready[count].fd = workers[i].socket;
@@ -477,7 +496,7 @@ int render_parallel(tracer *t, const camera *c, enum render_sampling sampling,
 			return -1;
 		}
 		for (k = 0; culprit < 0 && k < count; k++)
-			if (ready[k].revents && !receive_all(&jb, &workers[waiting[k]], end))
+			if (ready[k].revents && !receive_all(&workers[waiting[k]], end))
 				culprit = waiting[k];
 		if (culprit >= 0) {
 			finish_workers(1, culprit);

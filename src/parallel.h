@@ -5,7 +5,7 @@
 
 #include "antialias.h"
 
-/* Most workers a render starts (-j): its line window holds two lines per worker. */
+/* Most processes a render runs (-j): its line window holds four lines for each. */
 #define PARALLEL_MAX_JOBS 64
 
 /* The processors online, at least 1 and at most PARALLEL_MAX_JOBS: -j's default. */
