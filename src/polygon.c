@@ -85,13 +85,17 @@ static inline int crossings(const vec3 *vertices, int count, const ray_frame *f,
 #if RT_POLYGON_RUNS
 		/* At a run's start (runs start at vertex 1, 1 + RUN, ...: the edge into
 		 * vertex 0 starts at the last), pass over each run whose box holds the ends
-		 * of the edges into vertices i .. i + RUN - 1 and lets none of them count. */
-		if (s && i > 0 && (i - 1) % RT_POLYGON_RUN == 0) {
+		 * of the edges into vertices i .. i + RUN - 1 and lets none of them count;
+		 * then over the shorter run that ends the polygon, if it has one. */
+		if (s && count > RT_POLYGON_RUN && i > 0 && (i - 1) % RT_POLYGON_RUN == 0) {
 			int passed = 0;
-			while (i + RT_POLYGON_RUN <= count &&
-			       run_passes(s->run_lo[(first + i) / RT_POLYGON_RUN],
-					  s->run_hi[(first + i) / RT_POLYGON_RUN], f, z)) {
-				i += RT_POLYGON_RUN;
+			while (i < count) {
+				int whole = i + RT_POLYGON_RUN <= count;
+				int slot = (first + (whole ? i : count - 1)) / RT_POLYGON_RUN;
+				if (!run_passes(whole ? s->run_lo[slot] : s->tail_lo[slot],
+						whole ? s->run_hi[slot] : s->tail_hi[slot], f, z))
+					break;
+				i = whole ? i + RT_POLYGON_RUN : count;
 				passed = 1;
 			}
 			if (passed) {
@@ -296,6 +300,15 @@ void polygon_init(scene *s, polygon_shape *poly, dir3 normal, int first, int cou
 			box_empty(&s->run_lo[slot], &s->run_hi[slot]);
 			for (i = first + k - 1; i < first + k + RT_POLYGON_RUN; i++)
 				box_grow(&s->run_lo[slot], &s->run_hi[slot], s->vertices[i]);
+		}
+		/* The shorter run after them (k < count), in a polygon of more than RUN
+		 * vertices: a 144-gon's last 15 edges. Its slot is its last vertex's pool
+		 * index over RUN: such polygons' last vertices lie more than RUN apart. */
+		if (count > RT_POLYGON_RUN && k < count) {
+			int slot = (first + count - 1) / RT_POLYGON_RUN;
+			box_empty(&s->tail_lo[slot], &s->tail_hi[slot]);
+			for (i = first + k - 1; i < first + count; i++)
+				box_grow(&s->tail_lo[slot], &s->tail_hi[slot], s->vertices[i]);
 		}
 	}
 #endif

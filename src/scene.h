@@ -128,8 +128,10 @@ typedef struct {
 	halfspace planes[RT_MAX_PLANES];
 #if RT_POLYGON_RUNS
 	/* The boxes of the polygons' runs of RT_POLYGON_RUN edges (polygon_init): the run
-	 * whose first vertex is pool vertex g is in slot g / RT_POLYGON_RUN. */
+	 * whose first vertex is pool vertex g is in slot g / RT_POLYGON_RUN. A shorter run
+	 * that ends a polygon is in tail_lo and tail_hi, in the slot of its last vertex. */
 	vec3 run_lo[RT_MAX_VERTICES / RT_POLYGON_RUN + 1], run_hi[RT_MAX_VERTICES / RT_POLYGON_RUN + 1];
+	vec3 tail_lo[RT_MAX_VERTICES / RT_POLYGON_RUN + 1], tail_hi[RT_MAX_VERTICES / RT_POLYGON_RUN + 1];
 #endif
 } scene;
 

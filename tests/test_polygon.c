@@ -633,47 +633,52 @@ static void test_patch(void)
 	check_patch_normal(&quad, REAL_C(0.25), REAL_C(0.75), e);
 }
 
-/* A big star polygon (203 vertices, after a small polygon in the pool: its runs' slots
- * are not the pool's first), tilted: rays from its front at random points of its
- * plane, at its vertices and at its edges' middles meet it through polygon_intersect
- * (which passes over runs of edges by their boxes) exactly when the plain crossings
- * test says they should. */
+/* Two big star polygons (203 and 37 vertices, after a small polygon in the pool: their
+ * runs' slots are not the pool's first, and each ends in a shorter run), tilted: rays
+ * from their front at random points of their plane, at their vertices and at their
+ * edges' middles meet them through polygon_intersect (which passes over runs of edges by
+ * their boxes) exactly when the plain crossings test says they should. */
 static void test_runs(void)
 {
 	static char text[1 << 15];
-	enum { POINTS = 203 };
+	static const int points[2] = {203, 37};
 	size_t at;
-	int i, rays = 0, inside = 0, disagree = 0;
-	const object *star;
+	int i, star_at, rays = 0, inside = 0, disagree = 0;
 	test_seed(16);
 	at = (size_t)snprintf(text, sizeof text,
 			      "v\nfrom 0 0 10\nat 0 0 0\nup 0 1 0\nangle 30\nhither 1\n"
 			      "resolution 8 8\nl 0 0 10\nf 1 1 1 1 0 0 0 1\n"
-			      "p 5\n5 5 5\n6 5 5\n6 6 5\n5.5 6.5 5\n5 6 5\np %d\n", POINTS);
-	for (i = 0; i < POINTS && at < sizeof text; i++) {
-		double angle = 6.283185307179586 * i / POINTS;
-		double radius = i % 2 ? 0.3 + 0.5 * test_random() : 1.0;
-		double x = radius * cos(angle), y = radius * sin(angle);
-		int n = snprintf(text + at, sizeof text - at, "%.17g %.17g %.17g\n", x + 0.1 * y,
-				 0.3 * x + y, 0.2 * x - 0.4 * y);
+			      "p 5\n5 5 5\n6 5 5\n6 6 5\n5.5 6.5 5\n5 6 5\n");
+	for (star_at = 0; star_at < 2; star_at++) {
+		int n = snprintf(text + at, sizeof text - at, "p %d\n", points[star_at]);
 		at = n > 0 ? at + (size_t)n : at;
+		for (i = 0; i < points[star_at] && at < sizeof text; i++) {
+			double angle = 6.283185307179586 * i / points[star_at];
+			double radius = i % 2 ? 0.3 + 0.5 * test_random() : 1.0;
+			double x = radius * cos(angle), y = radius * sin(angle);
+			n = snprintf(text + at, sizeof text - at, "%.17g %.17g %.17g\n",
+				     x + 0.1 * y, 0.3 * x + y, 0.2 * x - 0.4 * y);
+			at = n > 0 ? at + (size_t)n : at;
+		}
 	}
 	if (!CHECK(test_parse_buffer(&s, "star.nff", text, NULL, NULL)))
 		return;
-	CHECK_INT(s.object_count, 2);
-	star = &s.objects[1];
-	CHECK_INT(star->u.polygon.count, POINTS);
-	for (i = 0; i < 20000; i++) {
+	CHECK_INT(s.object_count, 3);
+	CHECK_INT(s.objects[1].u.polygon.count, points[0]);
+	CHECK_INT(s.objects[2].u.polygon.count, points[1]);
+	for (i = 0; i < 40000; i++) {
+		const object *star = &s.objects[1 + i % 2];
+		int count = star->u.polygon.count;
 		const vec3 *v = s.vertices + star->u.polygon.first;
-		int k = (int)test_random_range(0.0, POINTS - 0.01);
+		int k = (int)test_random_range(0.0, count - 0.01);
 		vec3 target, from, front = dir_to_vec(star->u.polygon.normal);
 		ray r;
 		hit h;
 		int through_runs, plain;
-		if (i % 3 == 0)
+		if (i / 2 % 3 == 0)
 			target = v[k];
-		else if (i % 3 == 1)
-			target = vec_scale(vec_add(v[k], v[(k + 1) % POINTS]), REAL_C(0.5));
+		else if (i / 2 % 3 == 1)
+			target = vec_scale(vec_add(v[k], v[(k + 1) % count]), REAL_C(0.5));
 		else
 			target = vec_make(test_real(test_random_range(-1.1, 1.1)),
 					  test_real(test_random_range(-1.1, 1.1)), REAL_C(0.0));
@@ -683,13 +688,13 @@ static void test_runs(void)
 					test_real(test_random_range(-2.0, 2.0))));
 		r = test_ray(from, vec_sub(target, from));
 		through_runs = polygon_intersect(&s, star, &r, REAL_C(0.0), REAL_MAX, &h);
-		plain = polygon_contains_ray(v, POINTS, &r);
+		plain = polygon_contains_ray(v, count, &r);
 		rays++;
 		inside += plain;
 		disagree += through_runs != plain;
 	}
-	CHECK_INT(rays, 20000);
-	CHECK(inside > 5000 && inside < 15000);
+	CHECK_INT(rays, 40000);
+	CHECK(inside > 10000 && inside < 30000);
 	CHECK_INT(disagree, 0);
 }
 
