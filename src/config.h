@@ -51,9 +51,10 @@
 #define RT_MAX_MEDIA 8 /* nested transmitting objects a ray can be inside at once */
 #endif
 #ifndef RT_PARALLEL_POOL
-/* -j's window at most, in colours (and as many ids): four lines a process, and two more,
- * of the image's width (twice that with -a), mapped for the render only as large as it
- * needs; 2^20 holds 64 processes to 4,000 pixels wide, 31 at 8,192. */
+/* -j's pool, in colours (and as many ids), which holds the window: four lines a process
+ * and two more, of the image's width (twice that with -a); mapped shared with the workers,
+ * and touched only as far as the window needs. 2^20 holds 64 processes to 4,000 pixels
+ * wide, 31 at 8,192. */
 #define RT_PARALLEL_POOL (1L << 20)
 #endif
 #ifndef RT_TOKEN_MAX

@@ -53,13 +53,15 @@
  * (with two, balls' worker waited for the parent 70-90 times a render, 2-3 ms in all). */
 #define UNITS_PER_WORKER 3
 
-/* The window of lines (and, with -a, of rows): colours and as many ids, shared with the
- * workers. Each slot holds a line of width + 1 colours and ids, and with -a the row
- * refined from it too; there are WINDOW_PER_JOB slots a process and 2 more, at most
- * RT_PARALLEL_POOL colours (24 MiB in double), which caps -j at the widest images. */
+/* The window of lines (and, with -a, of rows): a pool of RT_PARALLEL_POOL colours and as
+ * many ids (28 MiB in double), a fixed array as a static one would be, but mapped shared
+ * before the fork so that the workers write into it; a render touches only its window's
+ * part. Each slot holds a line of width + 1 colours and ids, and with -a the row refined
+ * from it too; there are WINDOW_PER_JOB slots a process and 2 more, which caps -j at the
+ * widest images. */
 static vec3 *pool;
 static int *pool_ids;
-static size_t pool_bytes; /* the mapping's size; 0: none */
+#define POOL_BYTES ((size_t)RT_PARALLEL_POOL * (sizeof(vec3) + sizeof(int)))
 static int no_ids[RT_MAX_WIDTH]; /* -a's rows: four or more rays a pixel, no one object */
 
 /* The window's most slots: lines may run ahead of the row that leaves next by up to
@@ -181,29 +183,25 @@ static vec3 *row_colours(const job *jb, int index)
 	return line_colours(jb, index) + jb->line_length;
 }
 
-/* Maps a window of `slots` slots of jb's, shared with the processes forked after. 0, with
- * errno, when it cannot. */
-static int share_window(const job *jb, int slots)
+/* Maps the pool, shared with the processes forked after. 0 when the system refuses. */
+static int share_pool(void)
 {
-	size_t colours = (size_t)slots * jb->slot_length;
-	size_t bytes = colours * (sizeof(vec3) + sizeof(int));
-	void *mapped = mmap(NULL, bytes, PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0);
+	void *mapped = mmap(NULL, POOL_BYTES, PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS,
+			    -1, 0);
 	if (mapped == MAP_FAILED)
 		return 0;
 	pool = mapped;
 	/* The ids after the colours: at a multiple of sizeof(vec3), aligned for an int. */
-	pool_ids = (int *)(void *)((unsigned char *)mapped + colours * sizeof(vec3));
-	pool_bytes = bytes;
+	pool_ids = (int *)(void *)((unsigned char *)mapped + RT_PARALLEL_POOL * sizeof(vec3));
 	return 1;
 }
 
-static void unshare_window(void)
+static void unshare_pool(void)
 {
-	if (pool_bytes)
-		munmap(pool, pool_bytes);
+	if (pool)
+		munmap(pool, POOL_BYTES);
 	pool = NULL;
 	pool_ids = NULL;
-	pool_bytes = 0;
 }
 
 /* Traces a unit into its slot of the window: line y, or (-a) row y refined from its two
@@ -301,7 +299,7 @@ static int finish_workers(int stop, int culprit)
 	}
 	worker_count = 0;
 	output_on_end(NULL);
-	unshare_window();
+	unshare_pool();
 	return fine;
 }
 
@@ -432,13 +430,13 @@ int render_parallel(tracer *t, const camera *c, enum render_sampling sampling,
 	jobs = jobs < fitting ? jobs : fitting;
 	window.first = y0;
 	window.size = jobs * WINDOW_PER_JOB + 2;
-	/* Without a shared window (a system that refuses the mapping) one process renders:
-	 * the same bytes. */
-	if (jobs <= 1 || !share_window(&jb, window.size))
+	/* Without the shared pool (a system that refuses the mapping: an address-space limit)
+	 * one process renders: the same bytes. */
+	if (jobs <= 1 || !share_pool())
 		return aa ? render_adaptive(t, c, aa, y0, y1, out, progress, progress_ctx)
 			  : render_image(t, c, sampling, y0, y1, out, progress, progress_ctx);
 	if (!out->begin(out, c->width, y1 - y0)) {
-		unshare_window();
+		unshare_pool();
 		return 0;
 	}
 	for (i = 0; i < c->width; i++)
@@ -450,7 +448,7 @@ int render_parallel(tracer *t, const camera *c, enum render_sampling sampling,
 	if (worker_count == 0) {
 		diag_error(NULL, 0, "cannot start a worker process: %s", strerror(errno));
 		output_on_end(NULL);
-		unshare_window();
+		unshare_pool();
 		return -1;
 	}
 	memset(window.line_done, 0, sizeof window.line_done);

@@ -66,10 +66,10 @@ if grep -qx 'eye_rays: 1200' "$tmp/err"; then ok; else
 	bad "--stats at -j 2: eye_rays is not 40 x 30 ($(grep eye_rays "$tmp/err"))"
 fi
 
-# Without room for the shared window one process renders: the same bytes, status 0. The
+# Without room for the shared pool one process renders: the same bytes, status 0. The
 # address space is held to the least -j 1 needs (found by halving, in KiB) and 512 KiB
-# more, less than the window -j 2 needs at 8,000 pixels wide (2.2 MB). A sanitized build
-# reserves terabytes and runs under no such limit: skipped there.
+# more, less than the pool -j maps (RT_PARALLEL_POOL colours and ids, 28 MiB in double). A
+# sanitized build reserves terabytes and runs under no such limit: skipped there.
 wide_under_limit() {
 	sh -c 'ulimit -v "$1" && exec "$2" -j "$3" -s 8000x2 -o "$4" scenes/showpiece.nff' \
 		sh "$1" "$RT" "$2" "$tmp/limit-$2.ppm" 2>/dev/null
