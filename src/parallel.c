@@ -31,6 +31,7 @@
 #include "parallel.h"
 
 #include <errno.h>
+#include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
 #include <string.h>
@@ -101,6 +102,7 @@ typedef struct {
 	enum render_sampling sampling;
 	const antialias *aa;   /* NULL: none */
 	int corners;           /* lines of corners (--spd, -a) */
+	int first, end;        /* the render's lines [first, end) */
 	size_t line_length;    /* colours in a line: the width, + 1 for corners */
 	size_t slot_length;    /* colours in a slot */
 } job;
@@ -223,12 +225,30 @@ static void work(const job *jb, int fd)
 	memset(&u, 0, sizeof u); /* its padding too: all of it is sent */
 	memset(&jb->t->stats, 0, sizeof jb->t->stats);
 	while (read_full(fd, &u, sizeof u)) {
+		/* Only what the parent sends; anything else (nothing should be) ends the worker
+		 * before it writes outside the window. */
+		if ((u.kind != UNIT_LINE && u.kind != UNIT_ROW) || u.index < jb->first ||
+		    u.index + (u.kind == UNIT_ROW) >= jb->end)
+			_exit(1);
 		do_unit(jb, jb->t, u.kind, u.index);
 		u.stats = jb->t->stats;
 		if (!send_full(fd, &u, sizeof u, 0))
 			_exit(1);
 	}
 	_exit(0);
+}
+
+/* fd moved above standard input, output and error (closed, fd itself); -1 when it
+ * cannot be. With one of those closed, socketpair hands out its number, and rt's image
+ * (or a read of its input) would go to a worker's socket. */
+static int above_standard(int fd)
+{
+	int moved;
+	if (fd > STDERR_FILENO)
+		return fd;
+	moved = fcntl(fd, F_DUPFD, STDERR_FILENO + 1);
+	close(fd);
+	return moved;
 }
 
 /* Forks worker i. 0, with errno, when it cannot. */
@@ -238,6 +258,17 @@ static int start_worker(int i, const job *jb)
 	pid_t pid;
 	if (socketpair(AF_UNIX, SOCK_STREAM, 0, ends) != 0)
 		return 0;
+	ends[0] = above_standard(ends[0]);
+	ends[1] = above_standard(ends[1]);
+	if (ends[0] < 0 || ends[1] < 0) {
+		int saved = errno;
+		if (ends[0] >= 0)
+			close(ends[0]);
+		if (ends[1] >= 0)
+			close(ends[1]);
+		errno = saved;
+		return 0;
+	}
 	pid = fork();
 	if (pid < 0) {
 		int saved = errno;
@@ -424,6 +455,8 @@ int render_parallel(tracer *t, const camera *c, enum render_sampling sampling,
 	jb.line_length = (size_t)c->width + (size_t)jb.corners;
 	jb.slot_length = jb.line_length * (aa ? 2 : 1);
 	end = y1 + jb.corners; /* lines [y0, end) make rows [y0, y1) */
+	jb.first = y0;
+	jb.end = end;
 	/* As many processes as there are lines, and as the pool holds windows for. */
 	fitting = (int)((RT_PARALLEL_POOL / (long)jb.slot_length - 2) / WINDOW_PER_JOB);
 	jobs = jobs < end - y0 ? jobs : end - y0;

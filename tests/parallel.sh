@@ -89,6 +89,24 @@ if wide_under_limit 67108864 1; then
 	fi
 fi
 
+# With standard output closed, a socket could take its number and the image would go to a
+# worker (which crashed on it): every -j reports the write error as -j 1 does. With
+# standard input closed the image is -j 1's.
+for j in 1 2 3; do
+	"$RT" -j "$j" -s 96x72 scenes/showpiece.nff >&- 2>"$tmp/closed-err-$j"
+	echo $? >>"$tmp/closed-err-$j"
+	"$RT" -j "$j" -s 32x24 scenes/showpiece.nff <&- >"$tmp/closed-in-$j" 2>&1
+done
+for j in 2 3; do
+	if cmp -s "$tmp/closed-err-1" "$tmp/closed-err-$j" && grep -q "write error" "$tmp/closed-err-$j"
+	then ok; else
+		bad "-j $j with standard output closed: $(tr '\n' ' ' <"$tmp/closed-err-$j")"
+	fi
+	if [ -s "$tmp/closed-in-1" ] && cmp -s "$tmp/closed-in-1" "$tmp/closed-in-$j"; then ok; else
+		bad "-j $j with standard input closed differs from -j 1"
+	fi
+done
+
 # ---- the job count ----------------------------------------------------------------------
 for j in 0 65 x -1 ''; do
 	run -j "$j" -s 8x8 scenes/showpiece.nff
