@@ -25,7 +25,7 @@ VARIANT_FLAGS_float-offset-fixed = -DRT_REAL_FLOAT -DRT_NAIVE=RT_NAIVE_OFFSET
 TYPES = float double ref fixed
 ALGORITHMS = sphere-textbook hedron-per-face offset-fixed float-textbook float-per-face \
 	     float-offset-fixed
-VARIANT_CFLAGS = $(WARN) -ffp-contract=off $(VARIANT_FLAGS_$*)
+VARIANT_CFLAGS = $(WARN) $(HOST_MODEL) -ffp-contract=off $(VARIANT_FLAGS_$*)
 
 variants: $(TYPES:%=build/rt-%)
 
@@ -82,7 +82,10 @@ MSAN_FLAGS = -fsanitize=memory -fsanitize-memory-track-origins -fno-omit-frame-p
 MSAN_BUILDS = build/msan/unit-tests build/msan/unit-tests-fixed build/msan/replay \
 	build/msan/replay-fixed build/msan/rt-fixed
 MSAN_TEST = $(if $(shell command -v $(MSAN_CC)),$(MSAN_BUILDS))
-MSAN_CFLAGS = $(WARN) -ffp-contract=off $(MSAN_FLAGS) $(if $*,-DRT_REAL_FIXED)
+# clang's linker cannot relax the medium model's references to MemorySanitizer's globals.
+MSAN_LINK = $(if $(HOST_MODEL),$(MSAN_NO_RELAX))
+MSAN_NO_RELAX = -Wl,--no-relax
+MSAN_CFLAGS = $(WARN) $(HOST_MODEL) $(MSAN_LINK) -ffp-contract=off $(MSAN_FLAGS) $(if $*,-DRT_REAL_FIXED)
 build/msan/unit-tests build/msan/unit-tests-fixed: build/msan/unit-tests%: $(SRC) $(TEST_SRC) \
 		$(HDR) $(TEST_HDR)
 	$(call whole-program,$(MSAN_CC),$(MSAN_CFLAGS) $(TEST_CAPACITIES) -Isrc,$(LIB_SRC) $(TEST_SRC),-lm)

@@ -4,13 +4,19 @@
 #ifndef RT_CONFIG_H
 #define RT_CONFIG_H
 
+#include <stdint.h>
+
 /* Each capacity may be overridden with -DNAME=value (the MCU build shrinks them).
  * Exceeding one at run time is a clear error that names the macro to raise. */
+
+/* Scene capacities in millions on 64-bit hosts: 4 M primitives, their vertices and
+ * planes (bss costs nothing until a scene touches it), 2.3 GB of address space in
+ * double, past the 2 GiB of x86-64's default code model (the Makefile builds with the
+ * medium model there). A 32-bit host keeps half as many objects, a third of the
+ * vertices and a quarter of the planes, which its address space holds. */
+#define RT_HOST_64 (SIZE_MAX > 0xFFFFFFFFu)
 #ifndef RT_MAX_OBJECTS
-/* Primitives in a scene: 2 M (bss costs nothing until a scene touches it; the MCU sets
- * its own). More would pass the 2 GiB that x86-64's default code model allows static
- * data, in long double. */
-#define RT_MAX_OBJECTS 2097152
+#define RT_MAX_OBJECTS (RT_HOST_64 ? 4194304 : 2097152) /* primitives in a scene */
 #endif
 #ifndef RT_MAX_LIGHTS
 #define RT_MAX_LIGHTS 64 /* point lights */
@@ -19,13 +25,13 @@
 #define RT_MAX_MATERIALS 1024 /* distinct `f` materials (repeats share one slot) */
 #endif
 #ifndef RT_MAX_VERTICES
-#define RT_MAX_VERTICES 4194304 /* polygon and patch vertices, all polygons together */
+#define RT_MAX_VERTICES (RT_HOST_64 ? 12582912 : 4194304) /* polygon and patch vertices, all polygons together: 4 M triangles */
 #endif
 #ifndef RT_MAX_POLY_VERTS
 #define RT_MAX_POLY_VERTS 1024 /* vertices of one polygon (SPD gears needs 144) */
 #endif
 #ifndef RT_MAX_PLANES
-#define RT_MAX_PLANES 1048576 /* bounding planes, all polyhedra together */
+#define RT_MAX_PLANES (RT_HOST_64 ? 4194304 : 1048576) /* bounding planes, all polyhedra together */
 #endif
 #ifndef RT_MAX_HEDRON_PLANES
 #define RT_MAX_HEDRON_PLANES 64 /* planes of one polyhedron */
