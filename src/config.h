@@ -10,7 +10,7 @@
  * Exceeding one at run time is a clear error that names the macro to raise. */
 
 /* Scene capacities in millions on 64-bit hosts: 4 M primitives, their vertices and
- * planes (bss costs nothing until a scene touches it), 2.3 GB of address space in
+ * planes (bss costs nothing until a scene touches it), 2.2 GiB of address space in
  * double, past the 2 GiB of x86-64's default code model (the Makefile builds with the
  * medium model there). A 32-bit host keeps half as many objects, a third of the
  * vertices and a quarter of the planes, which its address space holds. */

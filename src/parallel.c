@@ -386,11 +386,11 @@ static int hand_out(worker *w, int kind, int index)
 	return 1;
 }
 
-/* t->stats as the sum of the workers' counts. */
-static void sum_stats(trace_stats *sum)
+/* *sum = the parent's own counts and every worker's. */
+static void sum_stats(trace_stats *sum, const trace_stats *own)
 {
 	int i;
-	memset(sum, 0, sizeof *sum);
+	*sum = *own;
 	for (i = 0; i < worker_count; i++) {
 		sum->eye_rays += workers[i].stats.eye_rays;
 		sum->eye_hits += workers[i].stats.eye_hits;
@@ -442,9 +442,9 @@ int render_parallel(tracer *t, const camera *c, enum render_sampling sampling,
 		    void *progress_ctx)
 {
 	/* The parent traces too (jobs - 1 workers and itself: no more processes than
-	 * jobs, so none waits for a core), with a tracer of its own whose counts it adds to
-	 * the workers'. */
-	static tracer here;
+	 * jobs, so none waits for a core), with t, whose counts are its own while it traces
+	 * and between units the sum of everyone's (for the progress bar and --stats). */
+	trace_stats own;
 	job jb;
 	int end, next_line = y0, next_row = y0, row = y0, i, k, fitting;
 	jb.t = t;
@@ -474,7 +474,7 @@ int render_parallel(tracer *t, const camera *c, enum render_sampling sampling,
 	}
 	for (i = 0; i < c->width; i++)
 		no_ids[i] = -1;
-	trace_copy(&here, t);
+	own = t->stats;
 	output_on_end(parallel_stop);
 	while (worker_count < jobs - 1 && start_worker(worker_count, &jb))
 		;
@@ -506,7 +506,9 @@ int render_parallel(tracer *t, const camera *c, enum render_sampling sampling,
 		 * left here, a wait for them. */
 		if (culprit < 0 && next_unit(&jb, next_line, next_row, row, end, y1, &kind, &index)) {
 			take_unit(kind, &next_line, &next_row);
-			do_unit(&jb, &here, kind, index);
+			t->stats = own;
+			do_unit(&jb, t, kind, index);
+			own = t->stats;
 			if (kind == UNIT_ROW)
 				window.row_done[slot_of(index)] = 1;
 			else
@@ -533,12 +535,7 @@ int render_parallel(tracer *t, const camera *c, enum render_sampling sampling,
 			finish_workers(1, culprit);
 			return -1;
 		}
-		sum_stats(&t->stats);
-		t->stats.eye_rays += here.stats.eye_rays;
-		t->stats.eye_hits += here.stats.eye_hits;
-		t->stats.shadow_rays += here.stats.shadow_rays;
-		t->stats.reflect_rays += here.stats.reflect_rays;
-		t->stats.refract_rays += here.stats.refract_rays;
+		sum_stats(&t->stats, &own);
 		/* The rows now complete leave in order. */
 		while (row < y1 && row_ready(&jb, row)) {
 			vec3 *colours = aa ? row_colours(&jb, row) : line_colours(&jb, row);

@@ -30,26 +30,6 @@ RT_APART static vec3 bounded(vec3 c)
 /* Mirror weights stay below 1 so two facing mirrors still fade out. */
 #define MIRROR_MAX REAL_C(0.99609375) /* 255/256 */
 
-void trace_copy(tracer *to, const tracer *from)
-{
-	const scene *s = accel_scene(from->accel);
-	int i;
-	to->accel = from->accel;
-	to->depth = from->depth;
-	to->cutoff = from->cutoff;
-	to->stats.eye_rays = to->stats.eye_hits = 0;
-	to->stats.shadow_rays = to->stats.reflect_rays = to->stats.refract_rays = 0;
-	to->eye_media = from->eye_media;
-	for (i = 0; i < RT_MAX_DEPTH * RT_MAX_LIGHTS; i++)
-		to->last_blocker[i / RT_MAX_LIGHTS][i % RT_MAX_LIGHTS] =
-			from->last_blocker[i / RT_MAX_LIGHTS][i % RT_MAX_LIGHTS];
-	to->eye.candidates = from->eye.candidates;
-	for (i = 0; i < s->object_count; i++)
-		to->eye.terms[i] = from->eye.terms[i];
-	for (i = 0; i < s->material_count; i++)
-		to->ambient[i] = from->ambient[i];
-}
-
 void trace_init(tracer *t, const accel *a, int depth, real cutoff)
 {
 	const scene *s = accel_scene(a);

@@ -33,10 +33,6 @@ typedef struct {
 /* Ready to trace the scene `a` searches (intersect.h). */
 void trace_init(tracer *t, const accel *a, int depth, real cutoff);
 
-/* A second tracer like `from`, its counts zero: only the terms of the objects the scene
- * has are copied (the struct holds room for RT_MAX_OBJECTS). */
-void trace_copy(tracer *to, const tracer *from);
-
 /* The eye rays that follow lie in the plane through the eye with unit normal n (an
  * image line's, camera_line.normal): objects the plane misses are not looked for. */
 void trace_eye_line(tracer *t, dir3 n);
