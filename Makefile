@@ -15,7 +15,8 @@ WARN = -std=c99 -pedantic -Wall -Wextra -Wshadow -Wdouble-promotion -Wstrict-pro
        -Wmissing-prototypes -Wpointer-arith -Wcast-qual -Wvla -Werror
 # x86-64's default code model holds static data to 2 GiB; rt's capacities (millions of
 # objects, config.h) take more, so host builds there use the medium model, which puts
-# large arrays beyond it (no cost measured: SPD balls and gears, the same bytes and time).
+# large arrays beyond it: the same bytes, the same time on SPD balls and gears, 5 % more
+# reading and building a million spheres.
 HOST_MODEL := $(if $(filter x86_64-%,$(shell $(CC) -dumpmachine 2>/dev/null)),-mcmodel=medium)
 # No FMA contraction: the hard cases are decided by rounding (numerics.md section 9).
 RT_CFLAGS = $(WARN) $(HOST_MODEL) -ffp-contract=off -MMD -MP
