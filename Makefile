@@ -15,8 +15,9 @@ WARN = -std=c99 -pedantic -Wall -Wextra -Wshadow -Wdouble-promotion -Wstrict-pro
        -Wmissing-prototypes -Wpointer-arith -Wcast-qual -Wvla -Werror
 # x86-64's default code model holds static data to 2 GiB; rt's capacities (millions of
 # objects, config.h) take more, so host builds there use the medium model, which puts
-# large arrays beyond it: the same bytes, the same time on SPD balls and gears, 5 % more
-# reading and building a million spheres.
+# large arrays beyond it: the same bytes, the same time on SPD balls and gears, 5-8 %
+# more building a million spheres (whose whole run is no slower: reading a scene a block
+# at a time, lexer.c, gained as much).
 HOST_MODEL := $(if $(filter x86_64-%,$(shell $(CC) -dumpmachine 2>/dev/null)),-mcmodel=medium)
 # No FMA contraction: the hard cases are decided by rounding (numerics.md section 9).
 RT_CFLAGS = $(WARN) $(HOST_MODEL) -ffp-contract=off -MMD -MP
@@ -97,4 +98,4 @@ clean:
 
 .PHONY: all test install uninstall clean
 
--include $(OBJ:.o=.d) $(TEST_OBJ:.o=.d)
+-include $(OBJ:.o=.d) $(TEST_OBJ:.o=.d) $(TEST_LIB_OBJ:.o=.d)

@@ -63,6 +63,11 @@
  * wide, 31 at 8,192. */
 #define RT_PARALLEL_POOL (1L << 20)
 #endif
+#ifndef RT_READ_BUFFER
+/* Bytes the lexer takes from a scene file at a time; 0 reads byte by byte through the
+ * source's read function (the MCU, whose RAM is short). */
+#define RT_READ_BUFFER 4096
+#endif
 #ifndef RT_TOKEN_MAX
 #define RT_TOKEN_MAX 64 /* longest token in a scene file, in bytes */
 #endif

@@ -21,6 +21,28 @@ void lexer_init(lexer *lx, const char *file, read_fn read, void *ctx, int length
 	lx->length_shift = length_shift;
 }
 
+#if RT_READ_BUFFER
+void lexer_read_blocks(lexer *lx, read_block_fn read_block)
+{
+	lx->read_block = read_block;
+	lx->buffered = lx->taken = 0;
+}
+
+/* The next byte of the input through the block reader, or -1 at its end. */
+static int next_buffered(lexer *lx)
+{
+	if (lx->taken == lx->buffered) {
+		lx->buffered = lx->read_block(lx->ctx, lx->buffer, RT_READ_BUFFER);
+		lx->taken = 0;
+		if (lx->buffered <= 0) {
+			lx->buffered = 0;
+			return -1;
+		}
+	}
+	return lx->buffer[lx->taken++];
+}
+#endif
+
 static int next_byte(lexer *lx)
 {
 	int c;
@@ -28,7 +50,11 @@ static int next_byte(lexer *lx)
 		c = lx->pending;
 		lx->pending = NO_BYTE;
 	} else {
+#if RT_READ_BUFFER
+		c = lx->read_block ? next_buffered(lx) : lx->read(lx->ctx);
+#else
 		c = lx->read(lx->ctx);
+#endif
 	}
 	if (c >= 0)
 		lx->last_line = lx->line;

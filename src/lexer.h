@@ -12,6 +12,12 @@
 /* Returns the next byte of the input, or -1 at its end. */
 typedef int (*read_fn)(void *ctx);
 
+#if RT_READ_BUFFER
+/* Reads up to max bytes of the input into `to`: their count, 0 at its end (or after an
+ * error, which the source reports when the pass ends). */
+typedef long (*read_block_fn)(void *ctx, unsigned char *to, long max);
+#endif
+
 #define NO_BYTE (-2) /* nothing pushed back */
 
 #define NO_BYTE (-2) /* nothing pushed back */
@@ -35,11 +41,23 @@ typedef struct {
 	int length_shift; /* lengths are read times 2^length_shift (fixed point's scale) */
 	real longest;     /* the largest length read, in magnitude (skipped objects too) */
 	int tiny_line;    /* line of the last number too small for the type (read as 0) */
+#if RT_READ_BUFFER
+	/* Set: the input comes RT_READ_BUFFER bytes at a time, through buffer (a call for
+	 * each byte was a tenth of reading a million spheres); read is then not used. */
+	read_block_fn read_block;
+	long buffered, taken; /* bytes in buffer; bytes of them already read */
+	unsigned char buffer[RT_READ_BUFFER];
+#endif
 } lexer;
 
 /* Starts reading `file` through read(ctx), lengths times 2^length_shift, with a lexer
  * whose other fields are zero. */
 void lexer_init(lexer *lx, const char *file, read_fn read, void *ctx, int length_shift);
+
+#if RT_READ_BUFFER
+/* After lexer_init: the input is read a block at a time through read_block. */
+void lexer_read_blocks(lexer *lx, read_block_fn read_block);
+#endif
 
 /* Reports the first error only (later ones would be consequences) and returns 0. */
 int lexer_fail(lexer *lx, int line, const char *fmt, ...) RT_PRINTF(3, 4);

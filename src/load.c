@@ -18,7 +18,12 @@ static int source_pass(scene *s, const char *name, const scene_source *source, i
 	int ok;
 	if (!source->open(source->ctx, again))
 		return 0;
-	ok = parse_scene_at(s, name, source->read, source->ctx, shift);
+#if RT_READ_BUFFER
+	if (source->read_block)
+		ok = parse_scene_blocks(s, name, source->read_block, source->ctx, shift);
+	else
+#endif
+		ok = parse_scene_at(s, name, source->read, source->ctx, shift);
 	/* The source reports its own read error; it counts only if parsing went well. */
 	if (!source->close(source->ctx, ok))
 		ok = 0;
@@ -127,6 +132,9 @@ int load_scene_buffer(scene *s, const char *name, const void *data, size_t size)
 	b.at = 0;
 	source.open = buffer_open;
 	source.read = read_buffer;
+#if RT_READ_BUFFER
+	source.read_block = NULL;
+#endif
 	source.close = buffer_close;
 	source.ctx = &b;
 	return load_scene_source(s, name, &source);

@@ -18,6 +18,9 @@ typedef struct {
 	 * that cannot be reopened must then be kept). */
 	int (*open)(void *ctx, int again);
 	read_fn read;
+#if RT_READ_BUFFER
+	read_block_fn read_block; /* if not NULL, used instead of read */
+#endif
 	int (*close)(void *ctx, int ok);
 	void *ctx;
 } scene_source;

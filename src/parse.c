@@ -388,6 +388,13 @@ static int parse_entity(parser *p)
 /* Large: static, so the MCU's small stack never holds it. */
 static parser the_parser;
 
+#if RT_READ_BUFFER
+/* The block reader of the parse parse_scene_blocks starts (NULL: none), handed on here
+ * rather than as a parameter so that parse_scene_at stays as it is where there is no
+ * buffer (the MCU, whose flash is full). */
+static read_block_fn next_read_block;
+#endif
+
 int parse_scene_at(scene *s, const char *file, read_fn read, void *ctx, int length_shift)
 {
 	parser *p = &the_parser;
@@ -397,6 +404,10 @@ int parse_scene_at(scene *s, const char *file, read_fn read, void *ctx, int leng
 	p->s = s;
 	p->material = -1;
 	lexer_init(&p->lx, file, read, ctx, length_shift);
+#if RT_READ_BUFFER
+	if (next_read_block)
+		lexer_read_blocks(&p->lx, next_read_block);
+#endif
 	ok = 1;
 	while (ok && lexer_next(&p->lx))
 		ok = parse_entity(p);
@@ -410,8 +421,23 @@ int parse_scene_at(scene *s, const char *file, read_fn read, void *ctx, int leng
 	/* The reader belongs to the caller and may live on its stack: forget it. */
 	p->lx.read = NULL;
 	p->lx.ctx = NULL;
+#if RT_READ_BUFFER
+	p->lx.read_block = NULL;
+#endif
 	return ok;
 }
+
+#if RT_READ_BUFFER
+int parse_scene_blocks(scene *s, const char *file, read_block_fn read_block, void *ctx,
+		       int length_shift)
+{
+	int ok;
+	next_read_block = read_block;
+	ok = parse_scene_at(s, file, NULL, ctx, length_shift);
+	next_read_block = NULL;
+	return ok;
+}
+#endif
 
 int parse_scene(scene *s, const char *file, read_fn read, void *ctx)
 {

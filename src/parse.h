@@ -13,6 +13,12 @@
  * `file` as FILE. Returns 1 on success. */
 int parse_scene_at(scene *s, const char *file, read_fn read, void *ctx, int length_shift);
 
+#if RT_READ_BUFFER
+/* parse_scene_at reading the scene a block at a time (lexer_read_blocks). */
+int parse_scene_blocks(scene *s, const char *file, read_block_fn read_block, void *ctx,
+		       int length_shift);
+#endif
+
 /* The same at scale 1 (every length as written). */
 int parse_scene(scene *s, const char *file, read_fn read, void *ctx);
 

@@ -115,6 +115,24 @@ static int file_read(void *ctx)
 	return c;
 }
 
+#if RT_READ_BUFFER
+/* A block of the input: straight from the file when it is read afresh each pass (the
+ * usual input); an input kept through a copy one byte at a time, as file_read keeps it,
+ * so that no pass reads further into it than the parser asks. */
+static long file_read_block(void *ctx, unsigned char *to, long max)
+{
+	file_reader *f = ctx;
+	int c;
+	if (f->reopen)
+		return (long)fread(to, 1, (size_t)max, f->file);
+	c = file_read(f);
+	if (c < 0)
+		return 0;
+	to[0] = (unsigned char)c;
+	return 1;
+}
+#endif
+
 /* Reports a read error of the input, or a failure of its copy, once parsing went well
  * (after a parse error the reading stopped early; a read error would only repeat it). */
 static int file_check(file_reader *f, int ok)
@@ -150,6 +168,9 @@ int load_scene_file(scene *s, const char *path)
 	f.name = f.from_stdin ? "<stdin>" : path;
 	source.open = file_open;
 	source.read = file_read;
+#if RT_READ_BUFFER
+	source.read_block = file_read_block;
+#endif
 	source.close = file_close;
 	source.ctx = &f;
 	ok = load_scene_source(s, f.name, &source);
