@@ -102,7 +102,7 @@ typedef struct {
 	enum render_sampling sampling;
 	const antialias *aa;   /* NULL: none */
 	int corners;           /* lines of corners (--spd, -a) */
-	int first, end;        /* the render's lines [first, end) */
+	int end;               /* the render's lines are [window.first, end) */
 	size_t line_length;    /* colours in a line: the width, + 1 for corners */
 	size_t slot_length;    /* colours in a slot */
 } job;
@@ -227,7 +227,7 @@ static void work(const job *jb, int fd)
 	while (read_full(fd, &u, sizeof u)) {
 		/* Only what the parent sends; anything else (nothing should be) ends the worker
 		 * before it writes outside the window. */
-		if ((u.kind != UNIT_LINE && u.kind != UNIT_ROW) || u.index < jb->first ||
+		if ((u.kind != UNIT_LINE && u.kind != UNIT_ROW) || u.index < window.first ||
 		    u.index + (u.kind == UNIT_ROW) >= jb->end)
 			_exit(1);
 		do_unit(jb, jb->t, u.kind, u.index);
@@ -455,7 +455,6 @@ int render_parallel(tracer *t, const camera *c, enum render_sampling sampling,
 	jb.line_length = (size_t)c->width + (size_t)jb.corners;
 	jb.slot_length = jb.line_length * (aa ? 2 : 1);
 	end = y1 + jb.corners; /* lines [y0, end) make rows [y0, y1) */
-	jb.first = y0;
 	jb.end = end;
 	/* As many processes as there are lines, and as the pool holds windows for. */
 	fitting = (int)((RT_PARALLEL_POOL / (long)jb.slot_length - 2) / WINDOW_PER_JOB);
