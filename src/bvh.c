@@ -162,33 +162,39 @@ static float wide_limit(real tmax)
 	return tmax < (real)FLT_MAX ? (float)tmax : INFINITY;
 }
 
-/* Which of node n's four boxes the ray enters before tmax: bit i for lane i, and
- * enter[i] where, never after the true entry. A NaN distance (0 times infinity: a ray
- * lying in a slab plane) fails its comparison and leaves the interval as it was. */
+/* Which of node n's boxes the ray enters before tmax: bit i for lane i, and enter[i]
+ * where, never after the true entry. A NaN distance (0 times infinity: a ray lying in a
+ * slab plane) fails its comparison and leaves the interval as it was. */
 static inline int wide_hit(const bvh_wide_node *n, const wide_ray *r, float tmax,
-			   float enter[4])
+			   float enter[WIDE_LANES])
 {
 #if WIDE_SSE
 	/* The same operations, four lanes at once: max_ps(a, b) is a > b ? a : b, lane by
 	 * lane, NaN included, so both paths give the same bits. */
-	__m128 tnear = _mm_setzero_ps(), tfar = _mm_set1_ps(tmax);
-	int axis;
-	for (axis = 0; axis < 3; axis++) {
-		__m128 t0 = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(n->box[r->near[axis]]),
-						  r->near_from4[axis]),
-				       r->inv4[axis]);
-		__m128 t1 = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(n->box[r->near[axis] ^ 1]),
-						  r->far_from4[axis]),
-				       r->inv4[axis]);
-		tnear = _mm_max_ps(t0, tnear);
-		tfar = _mm_min_ps(t1, tfar);
+	int group, mask = 0;
+	for (group = 0; group < WIDE_LANES; group += 4) {
+		__m128 tnear = _mm_setzero_ps(), tfar = _mm_set1_ps(tmax);
+		int axis;
+		for (axis = 0; axis < 3; axis++) {
+			__m128 t0 = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(&n->box[r->near[axis]][group]),
+							  r->near_from4[axis]),
+					       r->inv4[axis]);
+			__m128 t1 = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(&n->box[r->near[axis] ^ 1][group]),
+							  r->far_from4[axis]),
+					       r->inv4[axis]);
+			tnear = _mm_max_ps(t0, tnear);
+			tfar = _mm_min_ps(t1, tfar);
+		}
+		_mm_storeu_ps(&enter[group], tnear);
+		mask |= _mm_movemask_ps(_mm_cmple_ps(
+				tnear, _mm_add_ps(_mm_mul_ps(tfar, _mm_set1_ps(WIDE_SLACK)),
+						  _mm_set1_ps(FLT_MIN))))
+			<< group;
 	}
-	_mm_storeu_ps(enter, tnear);
-	return _mm_movemask_ps(_mm_cmple_ps(
-		tnear, _mm_add_ps(_mm_mul_ps(tfar, _mm_set1_ps(WIDE_SLACK)), _mm_set1_ps(FLT_MIN))));
+	return mask;
 #else
 	int i, axis, mask = 0;
-	for (i = 0; i < 4; i++) {
+	for (i = 0; i < WIDE_LANES; i++) {
 		float tnear = 0.0f, tfar = tmax;
 		for (axis = 0; axis < 3; axis++) {
 			float t0 = (n->box[r->near[axis]][i] - r->near_from[axis]) * r->inv[axis];
@@ -204,11 +210,19 @@ static inline int wide_hit(const bvh_wide_node *n, const wide_ray *r, float tmax
 #endif
 }
 
-/* The lanes set in a mask of four, in order, and how many. */
-static const unsigned char lanes_of[16][4] = {
-	{0}, {0}, {1}, {0, 1}, {2}, {0, 2}, {1, 2}, {0, 1, 2}, {3}, {0, 3}, {1, 3}, {0, 1, 3},
-	{2, 3}, {0, 2, 3}, {1, 2, 3}, {0, 1, 2, 3}};
-static const unsigned char lane_count[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
+/* The lowest lane set in a mask of eight (0 for none): one load, where a loop or two
+ * lookups by halves cost balls 1-6 %. */
+static const unsigned char lowest_lane[256] = {
+	0, 0, 1, 0, 2, 0, 1, 0, 3, 0, 1, 0, 2, 0, 1, 0, 4, 0, 1, 0, 2, 0, 1, 0, 3, 0, 1, 0, 2, 0, 1, 0,
+	5, 0, 1, 0, 2, 0, 1, 0, 3, 0, 1, 0, 2, 0, 1, 0, 4, 0, 1, 0, 2, 0, 1, 0, 3, 0, 1, 0, 2, 0, 1, 0,
+	6, 0, 1, 0, 2, 0, 1, 0, 3, 0, 1, 0, 2, 0, 1, 0, 4, 0, 1, 0, 2, 0, 1, 0, 3, 0, 1, 0, 2, 0, 1, 0,
+	5, 0, 1, 0, 2, 0, 1, 0, 3, 0, 1, 0, 2, 0, 1, 0, 4, 0, 1, 0, 2, 0, 1, 0, 3, 0, 1, 0, 2, 0, 1, 0,
+	7, 0, 1, 0, 2, 0, 1, 0, 3, 0, 1, 0, 2, 0, 1, 0, 4, 0, 1, 0, 2, 0, 1, 0, 3, 0, 1, 0, 2, 0, 1, 0,
+	5, 0, 1, 0, 2, 0, 1, 0, 3, 0, 1, 0, 2, 0, 1, 0, 4, 0, 1, 0, 2, 0, 1, 0, 3, 0, 1, 0, 2, 0, 1, 0,
+	6, 0, 1, 0, 2, 0, 1, 0, 3, 0, 1, 0, 2, 0, 1, 0, 4, 0, 1, 0, 2, 0, 1, 0, 3, 0, 1, 0, 2, 0, 1, 0,
+	5, 0, 1, 0, 2, 0, 1, 0, 3, 0, 1, 0, 2, 0, 1, 0, 4, 0, 1, 0, 2, 0, 1, 0, 3, 0, 1, 0, 2, 0, 1, 0,
+};
+RT_STATIC_ASSERT(lanes_fit_the_table, WIDE_LANES <= 8);
 #endif
 
 /* The two queries share one traversal; `shadow` is a constant at each call, so the
@@ -230,22 +244,26 @@ static inline real traverse(const scene *s, const bvh_tree *t, const ray *r, int
 #endif
 
 	*found = shadow ? -1 : 0;
-	/* Visits object `o`: returns 1 when the search is over (an opaque shadow blocker). */
-#define VISIT(o)                                                                              \
+	/* Visits object `o` for a shadow ray: returns at an opaque blocker. */
+#define VISIT_SHADOW(o)                                                                       \
+	do {                                                                                  \
+		int visit_ = (o);                                                             \
+		if (visit_ != skip && object_intersect(s, visit_, r, REAL_C(0.0), tmax, NULL)) { \
+			real kt_ = s->materials[s->objects[visit_].material].kt;            \
+			if (kt_ <= REAL_C(0.0)) {                                             \
+				*found = visit_;                                              \
+				return REAL_C(0.0);                                           \
+			}                                                                     \
+			pass = real_mul(pass, kt_);                                           \
+		}                                                                             \
+	} while (0)
+	/* Visits object `o` for a nearest-hit query: shrinks tmax to a nearer hit. */
+#define VISIT_NEAREST(o)                                                                      \
 	do {                                                                                  \
 		int visit_ = (o);                                                             \
 		if (visit_ == skip) /* the object the ray leaves and cannot meet again */     \
 			break;                                                                \
-		if (shadow) {                                                                 \
-			if (object_intersect(s, visit_, r, REAL_C(0.0), tmax, NULL)) {       \
-				real kt_ = s->materials[s->objects[visit_].material].kt;    \
-				if (kt_ <= REAL_C(0.0)) {                                     \
-					*found = visit_;                                      \
-					return REAL_C(0.0);                                   \
-				}                                                             \
-				pass = real_mul(pass, kt_);                                   \
-			}                                                                     \
-		} else if (*found && visit_ < h->object) {                                    \
+		if (*found && visit_ < h->object) {                                           \
 			/* A hit at the same distance as the nearest so far goes to the lower  \
 			 * index, as in the search object by object: coincident surfaces      \
 			 * then look the same whatever order the tree meets them in. */        \
@@ -263,16 +281,23 @@ static inline real traverse(const scene *s, const bvh_tree *t, const ray *r, int
 			*found = 1;                                                           \
 		}                                                                             \
 	} while (0)
+#define VISIT(o)                                                                              \
+	do {                                                                                  \
+		if (shadow)                                                                   \
+			VISIT_SHADOW(o);                                                      \
+		else                                                                          \
+			VISIT_NEAREST(o);                                                     \
+	} while (0)
 
 	for (i = 0; i < t->unbounded_count; i++)
 		VISIT(t->index[i]);
 #if BVH_WIDE
 	if (t->node_count && wide_ray_make(&wr, r)) {
-		/* Each node pushes at most three entries (its fourth lane is searched at once). */
+		/* Each node pushes at most all lanes but one (that one is searched at once). */
 		struct {
 			int child, count; /* a wide node (count 0) or a leaf's objects */
 			float enter;
-		} wide_stack[3 * (BVH_MAX_DEPTH + 1) + 2];
+		} wide_stack[(WIDE_LANES - 1) * (BVH_MAX_DEPTH + 1) + 2];
 		float limit = wide_limit(tmax);
 		int current = -1; /* the wide node to search next; -1: take one from the stack */
 		wide_stack[0].child = 0; /* the root */
@@ -281,8 +306,8 @@ static inline real traverse(const scene *s, const bvh_tree *t, const ray *r, int
 		top = 1;
 		for (;;) {
 			const bvh_wide_node *node;
-			float lane_enter[4];
-			int order[4] = {0, 0, 0, 0}, k, mask, near;
+			float lane_enter[WIDE_LANES];
+			int order[WIDE_LANES], k, mask, near;
 			if (current < 0) {
 				if (top == 0)
 					break;
@@ -311,16 +336,36 @@ static inline real traverse(const scene *s, const bvh_tree *t, const ray *r, int
 			}
 			node = &t->wide[current];
 			mask = wide_hit(node, &wr, limit, lane_enter);
-			k = lane_count[mask];
 			current = -1;
-			if (!k)
+			if (!mask)
 				continue;
-			/* The lanes entered, farthest first (a shadow ray takes them as they
-			 * come): all but the nearest wait on the stack, the nearest is searched
-			 * now. */
-			for (i = 0; i < k; i++)
-				order[i] = lanes_of[mask][i];
-			for (i = 1; !shadow && i < k; i++) {
+			if (shadow) {
+				/* Any blocker ends the search, so the lanes are taken as they
+				 * come: leaves at once, one inner lane next, the rest later. */
+				for (; mask; mask &= mask - 1) {
+					int lane = lowest_lane[mask];
+					int child = node->child[lane], count = node->count[lane];
+					if (!count) {
+						if (current >= 0) {
+							wide_stack[top].child = current;
+							wide_stack[top].count = 0;
+							wide_stack[top++].enter = 0.0f;
+						}
+						current = child;
+					} else if (count == WIDE_ONE_OBJECT) {
+						VISIT_SHADOW(child);
+					} else {
+						for (i = child; i < child + count; i++)
+							VISIT_SHADOW(t->index[i]);
+					}
+				}
+				continue;
+			}
+			/* The lanes entered, farthest first: all but the nearest wait on the
+			 * stack, the nearest is searched now. */
+			for (k = 0; mask; mask &= mask - 1)
+				order[k++] = lowest_lane[mask];
+			for (i = 1; i < k; i++) {
 				int lane = order[i], j;
 				for (j = i; j > 0 && lane_enter[order[j - 1]] < lane_enter[lane]; j--)
 					order[j] = order[j - 1];
@@ -393,6 +438,8 @@ static inline real traverse(const scene *s, const bvh_tree *t, const ray *r, int
 		}
 	}
 #undef VISIT
+#undef VISIT_NEAREST
+#undef VISIT_SHADOW
 	return pass;
 }
 

@@ -11,10 +11,18 @@
 
 #define BVH_MAX_DEPTH 60 /* deeper nodes become leaves; bounds the traversal stacks */
 
-/* Floating-point types search a four-wide tree with float boxes; fixed point, which
- * uses no floating point at all, searches the binary tree it is collapsed from. */
+/* Floating-point types search a wide tree with float boxes; fixed point, which uses no
+ * floating point at all, searches the binary tree it is collapsed from. */
 #define BVH_WIDE (!REAL_FLOAT_FREE)
-#define BVH_WIDE_NODES (BVH_WIDE ? RT_MAX_OBJECTS : 1)
+/* Lanes of a wide node: eight, which cuts the steps a ray takes through a tree of
+ * four-wide nodes by about a third, and with them the branches it mispredicts. */
+#define WIDE_LANES 8
+/* At most n L / (2 (L - 1)) wide nodes for n objects and L lanes: a node with an inner
+ * lane has all L lanes (bvh_build.c opens nodes until then), one without has at least
+ * two leaf lanes, and there are at most n leaves; so with T nodes of leaves only, the N
+ * others hold L N = (T + N - 1) inner lanes + at most n - 2 T leaf lanes, and T + N is
+ * largest at T = n / 2. */
+#define BVH_WIDE_NODES (BVH_WIDE ? RT_MAX_OBJECTS / 2 + RT_MAX_OBJECTS / (2 * (WIDE_LANES - 1)) + 1 : 1)
 
 #if BVH_WIDE
 #include <float.h>
@@ -75,16 +83,17 @@ static inline real bvh_bound(const bvh_node *n, int side, int axis)
 	return axis == 0 ? (real)p->x : axis == 1 ? (real)p->y : (real)p->z;
 }
 
-/* A node of the four-wide tree: the binary tree with every node's children replaced
- * by grandchildren until it has four (or only leaves left). Its boxes are the binary
+/* A node of the wide tree: the binary tree with every node's children replaced by
+ * grandchildren until it has WIDE_LANES (or only leaves left). Its boxes are the binary
  * nodes' rounded outwards to float, so that a box may be too big but never too small;
  * they are stored by row, box[2 axis + side][lane] (side 0 the lower bound, 1 the upper),
- * so that a row is one load of four lanes. */
+ * so that a row of four lanes is one load. */
 typedef struct {
-	float box[6][4];
-	int child[4]; /* inner lane: a wide node; leaf lane: the first slot in the index, or
-		       * with count WIDE_ONE_OBJECT the object */
-	int count[4]; /* leaf lane: number of objects; 0: an inner lane, or empty (child -1) */
+	float box[6][WIDE_LANES];
+	int child[WIDE_LANES]; /* inner lane: a wide node; leaf lane: the first slot in the
+				* index, or with count WIDE_ONE_OBJECT the object */
+	int count[WIDE_LANES]; /* leaf lane: number of objects; 0: an inner lane, or empty
+				* (child -1) */
 } bvh_wide_node;
 
 /* The count of a leaf lane of one object, whose child is the object's number. */

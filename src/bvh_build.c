@@ -1,7 +1,7 @@
 /* bvh_build.c - builds the bounding volume hierarchy over the scene's objects, in static
  * arrays, once after parsing: a binary tree by the binned surface area heuristic, then
- * (floating-point types) the same tree collapsed into nodes of four children, whose float
- * boxes bvh.c tests four at once.
+ * (floating-point types) the same tree collapsed into nodes of WIDE_LANES children, whose
+ * float boxes bvh.c tests four at a time.
  * See LICENSE for copyright and licence. */
 #include "bvh.h"
 
@@ -399,22 +399,22 @@ static vec3 bvh_corner(const bvh_node *n, int side)
 }
 
 /* Fills wide node w's lanes from binary nodes lane[0 .. n) and recurses into the inner
- * ones; the rest of the four lanes are empty (a box inside out, which no ray enters). */
+ * ones; the rest of the lanes are empty (a box inside out, which no ray enters). */
 static void wide_fill(bvh_tree *t, int w, const int *lane, int n);
 
 /* Collapses binary node b (with its subtree) into a new wide node; returns its number.
  * The lanes start as b's children, and the inner lane with the largest box is opened
- * into its two children until there are four lanes or only leaves. */
+ * into its two children until there are WIDE_LANES lanes or only leaves. */
 static int wide_collapse(bvh_tree *t, int b)
 {
-	int lane[4], n = 0, w = t->wide_count++;
+	int lane[WIDE_LANES], n = 0, w = t->wide_count++;
 	if (t->nodes[b].count) {
 		lane[n++] = b;
 	} else {
 		lane[n++] = t->nodes[b].start;
 		lane[n++] = t->nodes[b].start + 1;
 	}
-	while (n < 4) {
+	while (n < WIDE_LANES) {
 		int i, widest = -1;
 		real2 widest_area = 0;
 		for (i = 0; i < n; i++) {
@@ -437,7 +437,7 @@ static int wide_collapse(bvh_tree *t, int b)
 static void wide_fill(bvh_tree *t, int w, const int *lane, int n)
 {
 	int i, axis;
-	for (i = 0; i < 4; i++) {
+	for (i = 0; i < WIDE_LANES; i++) {
 		const bvh_node *c = i < n ? &t->nodes[lane[i]] : NULL;
 		for (axis = 0; axis < 3; axis++) {
 			t->wide[w].box[2 * axis][i] = c ? (float)bvh_bound(c, 0, axis) : INFINITY;

@@ -350,6 +350,86 @@ static int check_tree(const bvh_tree *t, const char *what)
 	return leaves;
 }
 
+#if BVH_WIDE
+/* Does the float box of lane `lane` of wide node w hold [lo, hi]? */
+static int lane_holds(const bvh_wide_node *w, int lane, vec3 lo, vec3 hi)
+{
+	int axis, holds = 1;
+	for (axis = 0; axis < 3; axis++)
+		holds &= (real)w->box[2 * axis][lane] <= vec_get(lo, axis) &&
+			 (real)w->box[2 * axis + 1][lane] >= vec_get(hi, axis);
+	return holds;
+}
+
+/* Checks the wide tree collapsed from the binary one: from the root, every bounded object
+ * in exactly one leaf lane whose box holds the object's bounds, every inner lane's box
+ * holding all of its node's boxes, a node with an inner lane full (nodes are opened until
+ * they have WIDE_LANES lanes or only leaves), empty lanes last and never entered, and no
+ * more nodes than the storage's bound. */
+static void check_wide(const bvh_tree *t, const char *what)
+{
+	static unsigned char seen[RT_MAX_OBJECTS];
+	static int pending[BVH_WIDE_NODES];
+	int i, lane, top = 0, bad_boxes = 0, not_full = 0, bad_empty = 0, missing = 0, nodes = 0;
+	for (i = 0; i < s.object_count; i++)
+		seen[i] = 0;
+	for (i = 0; i < t->unbounded_count; i++)
+		seen[t->index[i]]++;
+	if (!CHECK(t->wide_count > 0 && t->wide_count <= BVH_WIDE_NODES))
+		return;
+	pending[top++] = 0;
+	while (top > 0 && nodes <= t->wide_count) {
+		const bvh_wide_node *w = &t->wide[pending[--top]];
+		int lanes = 0, inner = 0;
+		nodes++;
+		for (lane = 0; lane < WIDE_LANES; lane++) {
+			int child = w->child[lane], count = w->count[lane];
+			vec3 lo, hi;
+			if (child < 0) {
+				/* Empty: inside out, so that no ray enters it. */
+				bad_empty += count != 0 || !(w->box[0][lane] > w->box[1][lane]);
+				continue;
+			}
+			bad_empty += lanes != lane; /* a lane in use after an empty one */
+			lanes++;
+			if (count == 0) {
+				const bvh_wide_node *c = &t->wide[child];
+				int k;
+				inner++;
+				for (k = 0; k < WIDE_LANES; k++) {
+					if (c->child[k] < 0)
+						continue;
+					lo = vec_make(c->box[0][k], c->box[2][k], c->box[4][k]);
+					hi = vec_make(c->box[1][k], c->box[3][k], c->box[5][k]);
+					bad_boxes += !lane_holds(w, lane, lo, hi);
+				}
+				if (top < BVH_WIDE_NODES)
+					pending[top++] = child;
+				continue;
+			}
+			for (i = 0; i < (count == WIDE_ONE_OBJECT ? 1 : count); i++) {
+				int o = count == WIDE_ONE_OBJECT ? child : t->index[child + i];
+				seen[o]++;
+				bad_boxes += shape_bounds(&s, &s.objects[o], &lo, &hi) &&
+					     !lane_holds(w, lane, lo, hi);
+			}
+		}
+		not_full += inner > 0 && lanes < WIDE_LANES;
+	}
+	for (i = 0; i < s.object_count; i++)
+		missing += seen[i] != 1;
+	if (bad_boxes || not_full || bad_empty || missing || nodes != t->wide_count)
+		printf("  %s, wide: %d boxes not holding, %d nodes not full, %d bad empty lanes, "
+		       "%d objects not once, %d of %d nodes reached\n",
+		       what, bad_boxes, not_full, bad_empty, missing, nodes, t->wide_count);
+	CHECK_INT(bad_boxes, 0);
+	CHECK_INT(not_full, 0);
+	CHECK_INT(bad_empty, 0);
+	CHECK_INT(missing, 0);
+	CHECK_INT(nodes, t->wide_count);
+}
+#endif
+
 /* Spheres of `count` at random centres in a cube of side `size` around `centre`, radii
  * from 1/1000 to 1/10 of it (with one_centre, all at the centre itself). */
 static int sphere_scene(int count, double centre, double size, int one_centre)
@@ -397,6 +477,9 @@ static void test_tree_shape(void)
 		if (!CHECK(tree->tree.node_count > 0))
 			continue;
 		leaves = check_tree(&tree->tree, what);
+#if BVH_WIDE
+		check_wide(&tree->tree, what);
+#endif
 		/* A leaf holds one to four objects. */
 		CHECK(leaves * 4 >= cases[c].count && leaves <= cases[c].count);
 	}
