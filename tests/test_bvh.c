@@ -399,8 +399,8 @@ static void check_wide(const bvh_tree *t, const char *what)
 				for (k = 0; k < WIDE_LANES; k++) {
 					if (c->child[k] < 0)
 						continue;
-					lo = vec_make(c->box[0][k], c->box[2][k], c->box[4][k]);
-					hi = vec_make(c->box[1][k], c->box[3][k], c->box[5][k]);
+					lo = vec_make((real)c->box[0][k], (real)c->box[2][k], (real)c->box[4][k]);
+					hi = vec_make((real)c->box[1][k], (real)c->box[3][k], (real)c->box[5][k]);
 					bad_boxes += !lane_holds(w, lane, lo, hi);
 				}
 				if (top < BVH_WIDE_NODES)
