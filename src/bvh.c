@@ -1,18 +1,31 @@
-/* bvh.c - searches the bounding volume hierarchy (built by bvh_build.c): front to back
- * with a fixed stack, shrinking the search as hits are found; shadow rays stop at the
- * first opaque blocker.
+/* bvh.c - searches the bounding volume hierarchy (built by bvh_build.c): the rays'
+ * preparation and the box tests, the binary tree's and the wide tree's, for each
+ * instruction set; the search itself is bvh_traverse.h, built once for each.
  * See LICENSE for copyright and licence. */
 #include "bvh.h"
 
 #include "intersect.h"
 
-/* SSE (every x86-64, and x86 built for it) tests the wide tree's four boxes at once;
- * other targets take the plain C loop, with the same results. RT_NO_SIMD=1 forces it. */
+/* SSE (every x86-64, and x86 built for it) tests a wide node's boxes four at a time;
+ * other targets take the plain C loop, with the same results. RT_NO_SIMD=1 forces it.
+ * Where the compiler can build a function for AVX alone (a target attribute) and the
+ * processor has it, the search is a second copy of the traversal built for it, which
+ * tests all eight boxes at once: asked at run time, so that the program itself still
+ * runs on any x86-64. RT_NO_AVX=1 leaves it out. */
 #if BVH_WIDE && defined(__SSE__) && !RT_NO_SIMD
 #include <xmmintrin.h>
 #define WIDE_SSE 1
 #else
 #define WIDE_SSE 0
+#endif
+#if WIDE_SSE && WIDE_LANES == 8 && defined(__GNUC__) && \
+	(defined(__x86_64__) || defined(__i386__)) && !RT_NO_AVX
+#include <cpuid.h>
+#include <immintrin.h>
+#define WIDE_AVX 1
+#define WIDE_AVX_TARGET __attribute__((target("avx")))
+#else
+#define WIDE_AVX 0
 #endif
 
 #define STACK_SIZE (BVH_MAX_DEPTH + 2)
@@ -210,6 +223,51 @@ static inline int wide_hit(const bvh_wide_node *n, const wide_ray *r, float tmax
 #endif
 }
 
+#if WIDE_AVX
+/* wide_hit's operations on all eight lanes at once (the same bits: _mm256_max_ps is
+ * a > b ? a : b lane by lane, and the comparison is false for NaN). */
+static inline WIDE_AVX_TARGET int wide_hit_avx(const bvh_wide_node *n, const wide_ray *r,
+						float tmax, float enter[WIDE_LANES])
+{
+	__m256 tnear = _mm256_setzero_ps(), tfar = _mm256_set1_ps(tmax);
+	int axis;
+	for (axis = 0; axis < 3; axis++) {
+		__m256 inv = _mm256_set1_ps(r->inv[axis]);
+		__m256 t0 = _mm256_mul_ps(_mm256_sub_ps(_mm256_loadu_ps(n->box[r->near[axis]]),
+							_mm256_set1_ps(r->near_from[axis])),
+					  inv);
+		__m256 t1 = _mm256_mul_ps(_mm256_sub_ps(_mm256_loadu_ps(n->box[r->near[axis] ^ 1]),
+							_mm256_set1_ps(r->far_from[axis])),
+					  inv);
+		tnear = _mm256_max_ps(t0, tnear);
+		tfar = _mm256_min_ps(t1, tfar);
+	}
+	_mm256_storeu_ps(enter, tnear);
+	return _mm256_movemask_ps(_mm256_cmp_ps(
+		tnear,
+		_mm256_add_ps(_mm256_mul_ps(tfar, _mm256_set1_ps(WIDE_SLACK)), _mm256_set1_ps(FLT_MIN)),
+		_CMP_LE_OQ));
+}
+
+/* Whether the processor has AVX and the system saves its registers (XCR0's SSE and AVX
+ * state bits): asked once, on the first search. By cpuid itself rather than the
+ * compiler's feature query, whose library data a program of more than 2 GiB of static
+ * arrays cannot reach from clang's build. */
+static int avx_present(void)
+{
+	static int present = -1;
+	unsigned int a, b, c, d, xcr0_low, xcr0_high;
+	if (present >= 0)
+		return present;
+	present = 0;
+	if (__get_cpuid(1, &a, &b, &c, &d) && (c & bit_AVX) && (c & bit_OSXSAVE)) {
+		__asm__("xgetbv" : "=a"(xcr0_low), "=d"(xcr0_high) : "c"(0));
+		present = (xcr0_low & 6) == 6;
+	}
+	return present;
+}
+#endif
+
 /* The lowest lane set in a mask of eight (0 for none): one load, where a loop or two
  * lookups by halves cost balls 1-6 %. */
 static const unsigned char lowest_lane[256] = {
@@ -225,227 +283,26 @@ static const unsigned char lowest_lane[256] = {
 RT_STATIC_ASSERT(lanes_fit_the_table, WIDE_LANES <= 8);
 #endif
 
-/* The two queries share one traversal; `shadow` is a constant at each call, so the
- * compiler makes two specialised copies. Nearest: the closest hit, shrinking tmax as hits
- * are found, children visited nearest first. Shadow: the product of the kt of every
- * transmitting object crossed, stopping at the first opaque one (*found gets it, or -1). */
-static inline real traverse(const scene *s, const bvh_tree *t, const ray *r, int skip,
-			    real tmax, hit *h, int shadow, int *found)
-{
-	struct {
-		int node;
-		real enter;
-	} stack[STACK_SIZE];
-	int top = 0, i;
-	real pass = REAL_C(1.0), enter, enter0, enter1;
-	slab_ray sr;
-#if BVH_WIDE
-	wide_ray wr;
+#define TRAVERSE traverse
+#define TRAVERSE_TARGET
+#define WIDE_HIT wide_hit
+#include "bvh_traverse.h"
+#if WIDE_AVX
+#define TRAVERSE traverse_avx
+#define TRAVERSE_TARGET WIDE_AVX_TARGET
+#define WIDE_HIT wide_hit_avx
+#include "bvh_traverse.h"
 #endif
-
-	*found = shadow ? -1 : 0;
-	/* Visits object `o` for a shadow ray: returns at an opaque blocker. */
-#define VISIT_SHADOW(o)                                                                       \
-	do {                                                                                  \
-		int visit_ = (o);                                                             \
-		if (visit_ != skip && object_intersect(s, visit_, r, REAL_C(0.0), tmax, NULL)) { \
-			real kt_ = s->materials[s->objects[visit_].material].kt;            \
-			if (kt_ <= REAL_C(0.0)) {                                             \
-				*found = visit_;                                              \
-				return REAL_C(0.0);                                           \
-			}                                                                     \
-			pass = real_mul(pass, kt_);                                           \
-		}                                                                             \
-	} while (0)
-	/* Visits object `o` for a nearest-hit query: shrinks tmax to a nearer hit. */
-#define VISIT_NEAREST(o)                                                                      \
-	do {                                                                                  \
-		int visit_ = (o);                                                             \
-		if (visit_ == skip) /* the object the ray leaves and cannot meet again */     \
-			break;                                                                \
-		if (*found && visit_ < h->object) {                                           \
-			/* A hit at the same distance as the nearest so far goes to the lower  \
-			 * index, as in the search object by object: coincident surfaces      \
-			 * then look the same whatever order the tree meets them in. */        \
-			hit tie_;                                                             \
-			if (object_intersect(s, visit_, r, REAL_C(0.0), real_step_up(tmax),   \
-					     &tie_) &&                                        \
-			    tie_.t <= tmax) {                                                 \
-				*h = tie_;                                                    \
-				tmax = h->t;                                                  \
-				h->object = visit_;                                           \
-			}                                                                     \
-		} else if (object_intersect(s, visit_, r, REAL_C(0.0), tmax, h)) {           \
-			tmax = h->t;                                                          \
-			h->object = visit_;                                                   \
-			*found = 1;                                                           \
-		}                                                                             \
-	} while (0)
-#define VISIT(o)                                                                              \
-	do {                                                                                  \
-		if (shadow)                                                                   \
-			VISIT_SHADOW(o);                                                      \
-		else                                                                          \
-			VISIT_NEAREST(o);                                                     \
-	} while (0)
-
-	for (i = 0; i < t->unbounded_count; i++)
-		VISIT(t->index[i]);
-#if BVH_WIDE
-	if (t->node_count && wide_ray_make(&wr, r)) {
-		/* Each node pushes at most all lanes but one (that one is searched at once). */
-		struct {
-			int child, count; /* a wide node (count 0) or a leaf's objects */
-			float enter;
-		} wide_stack[(WIDE_LANES - 1) * (BVH_MAX_DEPTH + 1) + 2];
-		float limit = wide_limit(tmax);
-		int current = -1; /* the wide node to search next; -1: take one from the stack */
-		wide_stack[0].child = 0; /* the root */
-		wide_stack[0].count = 0;
-		wide_stack[0].enter = 0.0f;
-		top = 1;
-		for (;;) {
-			const bvh_wide_node *node;
-			float lane_enter[WIDE_LANES];
-			int order[WIDE_LANES], k, mask, near;
-			if (current < 0) {
-				if (top == 0)
-					break;
-				top--;
-				/* A nearer hit found since this entry was pushed may make it
-				 * pointless; the entry may be computed a few roundings late (the
-				 * box of a patch met at the very distance of the nearest hit). */
-				if (!shadow && (real)wide_stack[top].enter > tmax * (real)WIDE_SLACK)
-					continue;
-				if (wide_stack[top].count == WIDE_ONE_OBJECT) {
-					VISIT(wide_stack[top].child);
-					if (!shadow)
-						limit = wide_limit(tmax);
-					continue;
-				}
-				if (wide_stack[top].count) {
-					int first = wide_stack[top].child;
-					int last = first + wide_stack[top].count;
-					for (i = first; i < last; i++)
-						VISIT(t->index[i]);
-					if (!shadow)
-						limit = wide_limit(tmax);
-					continue;
-				}
-				current = wide_stack[top].child;
-			}
-			node = &t->wide[current];
-			mask = wide_hit(node, &wr, limit, lane_enter);
-			current = -1;
-			if (!mask)
-				continue;
-			if (shadow) {
-				/* Any blocker ends the search, so the lanes are taken as they
-				 * come: leaves at once, one inner lane next, the rest later. */
-				for (; mask; mask &= mask - 1) {
-					int lane = lowest_lane[mask];
-					int child = node->child[lane], count = node->count[lane];
-					if (!count) {
-						if (current >= 0) {
-							wide_stack[top].child = current;
-							wide_stack[top].count = 0;
-							wide_stack[top++].enter = 0.0f;
-						}
-						current = child;
-					} else if (count == WIDE_ONE_OBJECT) {
-						VISIT_SHADOW(child);
-					} else {
-						for (i = child; i < child + count; i++)
-							VISIT_SHADOW(t->index[i]);
-					}
-				}
-				continue;
-			}
-			/* The lanes entered, farthest first: all but the nearest wait on the
-			 * stack, the nearest is searched now. */
-			for (k = 0; mask; mask &= mask - 1)
-				order[k++] = lowest_lane[mask];
-			for (i = 1; i < k; i++) {
-				int lane = order[i], j;
-				for (j = i; j > 0 && lane_enter[order[j - 1]] < lane_enter[lane]; j--)
-					order[j] = order[j - 1];
-				order[j] = lane;
-			}
-			for (i = 0; i < k - 1; i++) {
-				wide_stack[top + i].child = node->child[order[i]];
-				wide_stack[top + i].count = node->count[order[i]];
-				wide_stack[top + i].enter = lane_enter[order[i]];
-			}
-			top += k - 1;
-			near = order[k - 1];
-			if (!node->count[near]) {
-				current = node->child[near];
-			} else if (node->count[near] == WIDE_ONE_OBJECT) {
-				VISIT(node->child[near]);
-				if (!shadow)
-					limit = wide_limit(tmax);
-			} else {
-				int first = node->child[near], last = first + node->count[near];
-				for (i = first; i < last; i++)
-					VISIT(t->index[i]);
-				if (!shadow)
-					limit = wide_limit(tmax);
-			}
-		}
-		return pass;
-	}
-#endif
-	sr.origin = r->origin;
-	sr.inv = vec_make(real_div_unit(REAL_C(1.0), r->dir.x), real_div_unit(REAL_C(1.0), r->dir.y),
-			  real_div_unit(REAL_C(1.0), r->dir.z));
-	sr.near_x = sr.inv.x < REAL_C(0.0);
-	sr.near_y = sr.inv.y < REAL_C(0.0);
-	sr.near_z = sr.inv.z < REAL_C(0.0);
-	sr.dir = r->dir;
-	sr.divided = REAL_SATURATES && !(real_fabs(sr.inv.x) < RECIPROCAL_LIMIT &&
-					 real_fabs(sr.inv.y) < RECIPROCAL_LIMIT &&
-					 real_fabs(sr.inv.z) < RECIPROCAL_LIMIT);
-	if (t->node_count && box_hit(&t->nodes[0], &sr, tmax, &enter)) {
-		stack[0].node = 0;
-		stack[0].enter = enter;
-		top = 1;
-	}
-	while (top > 0) {
-		const bvh_node *n;
-		top--;
-		/* A nearer hit found since this node was pushed may make it pointless. */
-		if (!shadow && stack[top].enter > (REAL_SATURATES ? tmax : tmax * BOX_SLACK))
-			continue;
-		n = &t->nodes[stack[top].node];
-		if (n->count) {
-			for (i = 0; i < n->count; i++)
-				VISIT(t->index[n->start + i]);
-		} else {
-			/* Test both children here and push only those the ray enters, the
-			 * nearer one last so that it is searched first. */
-			int hit0 = box_hit(&t->nodes[n->start], &sr, tmax, &enter0);
-			int hit1 = box_hit(&t->nodes[n->start + 1], &sr, tmax, &enter1);
-			if (hit0 && hit1) {
-				int near = enter0 <= enter1 ? 0 : 1;
-				stack[top].node = n->start + !near;
-				stack[top++].enter = near ? enter0 : enter1;
-				stack[top].node = n->start + near;
-				stack[top++].enter = near ? enter1 : enter0;
-			} else if (hit0 || hit1) {
-				stack[top].node = n->start + (hit0 ? 0 : 1);
-				stack[top++].enter = hit0 ? enter0 : enter1;
-			}
-		}
-	}
-#undef VISIT
-#undef VISIT_NEAREST
-#undef VISIT_SHADOW
-	return pass;
-}
 
 int bvh_nearest(const scene *s, const bvh_tree *t, const ray *r, int skip, real tmax, hit *h)
 {
 	int found;
+#if WIDE_AVX
+	if (avx_present()) {
+		(void)traverse_avx(s, t, r, skip, tmax, h, 0, &found);
+		return found;
+	}
+#endif
 	(void)traverse(s, t, r, skip, tmax, h, 0, &found);
 	return found;
 }
@@ -453,6 +310,10 @@ int bvh_nearest(const scene *s, const bvh_tree *t, const ray *r, int skip, real 
 real bvh_transmittance(const scene *s, const bvh_tree *t, const ray *r, int skip, real tmax,
 		       int *blocker)
 {
+#if WIDE_AVX
+	if (avx_present())
+		return traverse_avx(s, t, r, skip, tmax, NULL, 1, blocker);
+#endif
 	return traverse(s, t, r, skip, tmax, NULL, 1, blocker);
 }
 

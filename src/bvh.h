@@ -22,7 +22,8 @@
  * two leaf lanes, and there are at most n leaves; so with T nodes of leaves only, the N
  * others hold L N = (T + N - 1) inner lanes + at most n - 2 T leaf lanes, and T + N is
  * largest at T = n / 2. */
-#define BVH_WIDE_NODES (BVH_WIDE ? RT_MAX_OBJECTS / 2 + RT_MAX_OBJECTS / (2 * (WIDE_LANES - 1)) + 1 : 1)
+#define BVH_WIDE_NODES \
+	(BVH_WIDE ? RT_MAX_OBJECTS / 2 + RT_MAX_OBJECTS / (2 * (WIDE_LANES - 1)) + 1 : 1)
 
 #if BVH_WIDE
 #include <float.h>

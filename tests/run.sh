@@ -32,8 +32,10 @@ tally unit-sanitized "$(./build/san/unit-tests 2>&1)"
 tally unit-float "$(./build/unit-tests-float 2>&1)"
 tally unit-long-double "$(./build/unit-tests-ref 2>&1)"
 # The hierarchy's suite with the wide tree's boxes tested one by one in plain C (hosts
-# without SSE), which must find what the SSE lanes find.
+# without SSE) and four at a time by SSE (processors without AVX), which must find what
+# the program's own search finds.
 tally unit-scalar-bvh "$(./build/unit-tests-scalar bvh 2>&1)"
+tally unit-sse-bvh "$(./build/unit-tests-sse bvh 2>&1)"
 tally unit-fixed "$(./build/unit-tests-fixed 2>&1)"
 tally unit-fixed-sanitized "$(./build/san/unit-tests-fixed 2>&1)"
 # Every fuzzing corpus input and every bad and good scene, parsed and rendered tiny under
