@@ -108,6 +108,10 @@ typedef struct {
 	int width, height;
 } view;
 
+/* Floating-point types take a big polygon's hits deep inside its outline without the
+ * crossings test (polygon.c); fixed point, whose images stay as they were, does not. */
+#define POLYGON_DISCS (RT_POLYGON_RUNS && !REAL_FIXED)
+
 typedef struct {
 	const char *file; /* scene file name, for messages */
 	int length_shift; /* lengths are stored times 2^length_shift (fixed point's scale) */
@@ -132,6 +136,14 @@ typedef struct {
 	 * that ends a polygon is in tail_lo and tail_hi, in the slot of its last vertex. */
 	vec3 run_lo[RT_MAX_VERTICES / RT_POLYGON_RUN + 1], run_hi[RT_MAX_VERTICES / RT_POLYGON_RUN + 1];
 	vec3 tail_lo[RT_MAX_VERTICES / RT_POLYGON_RUN + 1], tail_hi[RT_MAX_VERTICES / RT_POLYGON_RUN + 1];
+#if POLYGON_DISCS
+	/* A polygon of more than RT_POLYGON_RUN vertices has a disc about its centroid that
+	 * lies inside its outline (polygon_init): its centre and radius (0: none), and how
+	 * far its farthest vertex lies from the centre, in the slot of its first run. */
+	vec3 disc_centre[RT_MAX_VERTICES / RT_POLYGON_RUN + 1];
+	real disc_radius[RT_MAX_VERTICES / RT_POLYGON_RUN + 1];
+	real disc_reach[RT_MAX_VERTICES / RT_POLYGON_RUN + 1];
+#endif
 #endif
 } scene;
 

@@ -698,6 +698,105 @@ static void test_runs(void)
 	CHECK_INT(disagree, 0);
 }
 
+/* A point of big test polygon `shape` (i of n vertices), before it is tilted: a circle,
+ * a star, a crescent (a thin C, whose centroid lies in its hollow, outside it), and a
+ * circle whose vertices lie up to 0.02 off its plane. */
+static vec3 disc_shape_point(int shape, int i, int n)
+{
+	double angle = 6.283185307179586 * i / n, radius = 1.0, z = 0.0;
+	if (shape == 1)
+		radius = i % 2 ? 0.4 + 0.3 * test_random() : 1.0;
+	if (shape == 2) {
+		/* The outer arc out, the inner back: the C opens towards +x. */
+		int half = n / 2, k = i < half ? i : n - 1 - i;
+		angle = 3.141592653589793 * (0.3 + 1.4 * k / (half - 1));
+		radius = i < half ? 1.0 : 0.9;
+	}
+	if (shape == 3)
+		z = test_random_range(-0.02, 0.02);
+	return vec_make(test_real(radius * cos(angle)), test_real(radius * sin(angle)), test_real(z));
+}
+
+/* Big polygons (more than RT_POLYGON_RUN vertices), whose hits deep inside floating
+ * point takes from a disc about the centroid without the crossings test (polygon.c):
+ * the shapes of disc_shape_point, tilted, and in floating point the circle again 2e5
+ * from the origin, seen from up to 4e5 away. Rays from in front, at every angle down to
+ * the grazing REACH, at random points, at points just inside and outside the circle's
+ * edges (where the disc ends), at vertices and well inside: polygon_intersect meets each
+ * exactly when the plain crossings test says it should. */
+static void test_discs(void)
+{
+	static char text[1 << 16];
+	const int shapes = REAL_FIXED ? 4 : 5, counts[5] = {60, 41, 48, 50, 60};
+	const double far[5] = {0.0, 0.0, 0.0, 0.0, 2e5}, scale[5] = {1.0, 1.0, 1.0, 1.0, 10.0};
+	size_t at;
+	int shape, i, rays = 0, deep = 0, inside = 0, disagree = 0;
+	test_seed(17);
+	at = (size_t)snprintf(text, sizeof text,
+			      "v\nfrom 0 0 10\nat 0 0 0\nup 0 1 0\nangle 30\nhither 1\n"
+			      "resolution 8 8\nl 0 0 10\nf 1 1 1 1 0 0 0 1\n");
+	for (shape = 0; shape < shapes; shape++) {
+		int n = snprintf(text + at, sizeof text - at, "p %d\n", counts[shape]);
+		at = n > 0 ? at + (size_t)n : at;
+		for (i = 0; i < counts[shape] && at < sizeof text; i++) {
+			vec3 p = vec_scale(disc_shape_point(shape % 4, i, counts[shape]),
+					   test_real(scale[shape]));
+			double x = test_double(p.x), y = test_double(p.y), z = test_double(p.z);
+			n = snprintf(text + at, sizeof text - at, "%.17g %.17g %.17g\n",
+				     far[shape] + x + 0.1 * y, far[shape] + 0.3 * x + y,
+				     -far[shape] + 0.2 * x - 0.4 * y + z);
+			at = n > 0 ? at + (size_t)n : at;
+		}
+	}
+	if (!CHECK(test_parse_buffer(&s, "discs.nff", text, NULL, NULL)))
+		return;
+	CHECK_INT(s.object_count, shapes);
+	for (i = 0; i < 60000; i++) {
+		const object *o = &s.objects[i % shapes];
+		int which = i % shapes, count = o->u.polygon.count, how = i / shapes % 4;
+		const vec3 *v = s.vertices + o->u.polygon.first;
+		vec3 centre = vec_make(test_real(far[which]), test_real(far[which]), test_real(-far[which]));
+		vec3 front = dir_to_vec(o->u.polygon.normal), target, side, from;
+		double size = scale[which], c = test_random_range(0.26, 1.0), spin;
+		ray r;
+		hit h;
+		int got, plain;
+		/* A point on the tilted polygon's plane at radius `reach` and a random angle
+		 * (random points in the square, the circle's edge, well inside), or a vertex. */
+		double angle = test_random_range(0.0, 6.283185307179586), reach;
+		reach = how == 0 ? test_random_range(0.0, 1.5) : how == 1 ? test_random_range(0.95, 1.0)
+								   : test_random_range(0.0, 0.5);
+		if (how == 3) {
+			target = v[(int)test_random_range(0.0, count - 0.01)];
+		} else {
+			double x = size * reach * cos(angle), y = size * reach * sin(angle);
+			target = vec_add(centre, vec_make(test_real(x + 0.1 * y), test_real(0.3 * x + y),
+							  test_real(0.2 * x - 0.4 * y)));
+		}
+		deep += how == 2 && reach < 0.4 && c > 0.5 && (which == 0 || which == 4);
+		/* From in front: cos c to the normal, the rest along a random side. */
+		spin = test_random_range(0.0, 6.283185307179586);
+		side = vec_make(test_real(cos(spin)), test_real(sin(spin)), test_real(cos(3 * spin)));
+		side = vec_sub(side, vec_scale(front, vec_dot(side, front)));
+		if (vec_max_abs(side) < REAL_C(0.01))
+			continue;
+		side = vec_scale(side, test_real(sqrt(1.0 - c * c)) / vec_length(side));
+		from = vec_add(target, vec_scale(vec_add(vec_scale(front, test_real(c)), side),
+						test_real(size * test_random_range(2.0, 40.0) *
+							  (which == 4 ? 1000.0 : 1.0))));
+		r = test_ray(from, vec_sub(target, from));
+		got = polygon_intersect(&s, o, &r, REAL_C(0.0), REAL_MAX, &h);
+		plain = polygon_contains_ray(v, count, &r);
+		rays++;
+		inside += plain;
+		disagree += got != plain;
+	}
+	CHECK(rays > 55000);
+	CHECK(inside > rays / 4 && inside < rays * 3 / 4);
+	CHECK(deep > 1000); /* rays the disc answers (floating point), well inside */
+	CHECK_INT(disagree, 0);
+}
+
 void suite_polygon(void)
 {
 	scene_init(&s, "polygon");
@@ -710,4 +809,5 @@ void suite_polygon(void)
 	test_patch();
 	test_collinear();
 	test_runs();
+	test_discs();
 }
