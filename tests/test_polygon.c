@@ -633,6 +633,23 @@ static void test_patch(void)
 	check_patch_normal(&quad, REAL_C(0.25), REAL_C(0.75), e);
 }
 
+/* Rays at big polygons, counted: how many, how many the plain crossings test finds
+ * inside, and how many polygon_intersect (with the runs' boxes and, in floating point,
+ * the discs) answers otherwise. */
+typedef struct {
+	int rays, inside, disagree;
+} ray_tally;
+
+static void tally_ray(ray_tally *t, const object *o, vec3 from, vec3 target)
+{
+	ray r = test_ray(from, vec_sub(target, from));
+	hit h;
+	int plain = polygon_contains_ray(s.vertices + o->u.polygon.first, o->u.polygon.count, &r);
+	t->rays++;
+	t->inside += plain;
+	t->disagree += polygon_intersect(&s, o, &r, REAL_C(0.0), REAL_MAX, &h) != plain;
+}
+
 /* Two big star polygons (203 and 37 vertices, after a small polygon in the pool: their
  * runs' slots are not the pool's first, and each ends in a shorter run), tilted: rays
  * from their front at random points of their plane, at their vertices and at their
@@ -643,7 +660,8 @@ static void test_runs(void)
 	static char text[1 << 15];
 	static const int points[2] = {203, 37};
 	size_t at;
-	int i, star_at, rays = 0, inside = 0, disagree = 0;
+	int i, star_at;
+	ray_tally tally = {0, 0, 0};
 	test_seed(16);
 	at = (size_t)snprintf(text, sizeof text,
 			      "v\nfrom 0 0 10\nat 0 0 0\nup 0 1 0\nangle 30\nhither 1\n"
@@ -672,9 +690,6 @@ static void test_runs(void)
 		const vec3 *v = s.vertices + star->u.polygon.first;
 		int k = (int)test_random_range(0.0, count - 0.01);
 		vec3 target, from, front = dir_to_vec(star->u.polygon.normal);
-		ray r;
-		hit h;
-		int through_runs, plain;
 		if (i / 2 % 3 == 0)
 			target = v[k];
 		else if (i / 2 % 3 == 1)
@@ -686,16 +701,11 @@ static void test_runs(void)
 			       vec_make(test_real(test_random_range(-2.0, 2.0)),
 					test_real(test_random_range(-2.0, 2.0)),
 					test_real(test_random_range(-2.0, 2.0))));
-		r = test_ray(from, vec_sub(target, from));
-		through_runs = polygon_intersect(&s, star, &r, REAL_C(0.0), REAL_MAX, &h);
-		plain = polygon_contains_ray(v, count, &r);
-		rays++;
-		inside += plain;
-		disagree += through_runs != plain;
+		tally_ray(&tally, star, from, target);
 	}
-	CHECK_INT(rays, 40000);
-	CHECK(inside > 10000 && inside < 30000);
-	CHECK_INT(disagree, 0);
+	CHECK_INT(tally.rays, 40000);
+	CHECK(tally.inside > 10000 && tally.inside < 30000);
+	CHECK_INT(tally.disagree, 0);
 }
 
 /* A point of big test polygon `shape` (i of n vertices), before it is tilted: a circle,
@@ -730,7 +740,8 @@ static void test_discs(void)
 	const int shapes = REAL_FIXED ? 4 : 5, counts[5] = {60, 41, 48, 50, 60};
 	const double far[5] = {0.0, 0.0, 0.0, 0.0, 2e5}, scale[5] = {1.0, 1.0, 1.0, 1.0, 10.0};
 	size_t at;
-	int shape, i, rays = 0, deep = 0, inside = 0, disagree = 0;
+	int shape, i, deep = 0;
+	ray_tally tally = {0, 0, 0};
 	test_seed(17);
 	at = (size_t)snprintf(text, sizeof text,
 			      "v\nfrom 0 0 10\nat 0 0 0\nup 0 1 0\nangle 30\nhither 1\n"
@@ -755,12 +766,12 @@ static void test_discs(void)
 		const object *o = &s.objects[i % shapes];
 		int which = i % shapes, count = o->u.polygon.count, how = i / shapes % 4;
 		const vec3 *v = s.vertices + o->u.polygon.first;
-		vec3 centre = vec_make(test_real(far[which]), test_real(far[which]), test_real(-far[which]));
+		/* Lengths as the scene stores them (fixed point scales them up). */
+		double stored = ldexp(1.0, s.length_shift), size = scale[which] * stored;
+		vec3 centre = vec_make(test_real(far[which] * stored), test_real(far[which] * stored),
+				       test_real(-far[which] * stored));
 		vec3 front = dir_to_vec(o->u.polygon.normal), target, side, from;
-		double size = scale[which], c = test_random_range(0.26, 1.0), spin;
-		ray r;
-		hit h;
-		int got, plain;
+		double c = test_random_range(0.26, 1.0), spin;
 		/* A point on the tilted polygon's plane at radius `reach` and a random angle
 		 * (random points in the square, the circle's edge, well inside), or a vertex. */
 		double angle = test_random_range(0.0, 6.283185307179586), reach;
@@ -784,17 +795,12 @@ static void test_discs(void)
 		from = vec_add(target, vec_scale(vec_add(vec_scale(front, test_real(c)), side),
 						test_real(size * test_random_range(2.0, 40.0) *
 							  (which == 4 ? 1000.0 : 1.0))));
-		r = test_ray(from, vec_sub(target, from));
-		got = polygon_intersect(&s, o, &r, REAL_C(0.0), REAL_MAX, &h);
-		plain = polygon_contains_ray(v, count, &r);
-		rays++;
-		inside += plain;
-		disagree += got != plain;
+		tally_ray(&tally, o, from, target);
 	}
-	CHECK(rays > 55000);
-	CHECK(inside > rays / 4 && inside < rays * 3 / 4);
+	CHECK(tally.rays > 55000);
+	CHECK(tally.inside > tally.rays / 4 && tally.inside < tally.rays * 3 / 4);
 	CHECK(deep > 1000); /* rays the disc answers (floating point), well inside */
-	CHECK_INT(disagree, 0);
+	CHECK_INT(tally.disagree, 0);
 }
 
 void suite_polygon(void)
