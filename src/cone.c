@@ -106,6 +106,9 @@ int cone_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h)
 		/* The quadric is a double cone: keep the part between the two end circles. */
 		if (height < REAL_C(0.0) || height > c->length)
 			continue;
+		/* A shadow query needs no normal unless the cone shows only its inside. */
+		if (!h && !(o->flags & OBJ_INSIDE_ONLY))
+			return 1;
 		/* From the nearer point too: o + t d from a distant eye keeps only the
 		 * eye's precision. */
 		p = dir_madd(origin, roots[i], r->dir);
