@@ -305,25 +305,31 @@ static real segment_distance(vec3 p, vec3 a, vec3 b)
 
 /* The disc of a polygon of more than RT_POLYGON_RUN vertices: about its centroid, of the
  * centroid's distance from the nearest edge, less the spread (an edge's points lie within
- * it of the plane), when the centroid is inside the outline (a crossings test along the
- * normal, which a centroid that far from every edge answers exactly); else none. */
+ * it of the plane), when the centroid is inside the outline; else none. Inside: by a
+ * crossings test down the normal from the polygon's own distance (from a unit away, a
+ * polygon 1e-4 across was rounded as a unit is, and a centroid just outside it seen
+ * inside), which a centroid farther than deep_inside's margin for that ray from every
+ * edge answers exactly; a disc no wider than that margin is none. */
 static void disc_init(scene *s, const polygon_shape *poly, vec3 centroid)
 {
 	const vec3 *v = s->vertices + poly->first;
 	int slot = (poly->first + 1) / RT_POLYGON_RUN, i;
-	real radius = REAL_MAX, reach = REAL_C(0.0);
+	real radius = REAL_MAX, reach = REAL_C(0.0), size;
 	ray along;
 	for (i = 0; i < poly->count; i++) {
 		radius = real_min(radius, segment_distance(centroid, v[i], v[(i + 1) % poly->count]));
 		reach = real_max(reach, vec_length(vec_sub(v[i], centroid)));
 	}
-	along.origin = vec_add(centroid, dir_to_vec(poly->normal));
+	along.origin = dir_madd(centroid, reach, poly->normal);
 	along.dir = dir_neg(poly->normal);
+	size = real_max(vec_max_abs(along.origin), vec_max_abs(centroid) + reach);
 	radius = (radius - poly->spread) * (REAL_C(1.0) - REAL_C(1.0) / 1024);
 	s->disc_centre[slot] = centroid;
 	s->disc_reach[slot] = reach;
-	s->disc_radius[slot] =
-		radius > 0 && contains_ray(v, poly->count, &along, NULL, 0) ? radius : REAL_C(0.0);
+	s->disc_radius[slot] = radius > poly->spread + poly->spread + DISC_ROUNDING * size &&
+					       contains_ray(v, poly->count, &along, NULL, 0)
+				       ? radius
+				       : REAL_C(0.0);
 }
 
 #endif

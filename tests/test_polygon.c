@@ -1,6 +1,7 @@
 /* test_polygon.c - polygons and patches: the cases G01-G11 of numerics.md section 6, with a
  * seeded test that points on shared edges of a polygon grid lie in exactly one polygon.
  * See LICENSE for copyright and licence. */
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -803,6 +804,91 @@ static void test_discs(void)
 	CHECK_INT(tally.disagree, 0);
 }
 
+/* A tiny polygon (1e-4 across, in floating point) with a slit from its rim that ends
+ * just past its centroid, so that the centroid lies outside it, a few roundings of the
+ * coordinates' size from the slit's walls: the check that gives a polygon its disc only
+ * when the centroid is inside must be as fine as the polygon, not as the unit (a check
+ * from a unit away gave a quarter of these a disc, and the ray at the centroid a hit).
+ * Randomly turned; the ray straight down the normal at the centroid, and rays near it,
+ * meet each through polygon_intersect exactly when the crossings test says so. */
+static void test_disc_slit(void)
+{
+	static char text[1 << 13];
+	/* A few roundings of the size (no finer than double's, in which the test computes
+	 * the vertices). */
+	const double size = 1e-4,
+		     gap = 3e-8 * fmax((double)REAL_EPSILON, DBL_EPSILON) / 1.1920928955078125e-7;
+	int turn, i;
+	ray_tally tally = {0, 0, 0}, at_centroid = {0, 0, 0};
+	if (REAL_FIXED)
+		return; /* no discs, and 1e-4 is below Q16.16's reach */
+	test_seed(18);
+	for (turn = 0; turn < 40; turn++) {
+		double axis[3][3], sum = 0.0, end, q[4], n2 = 0.0, pts[42][2];
+		size_t at;
+		int k;
+		const object *o;
+		vec3 centre = vec_make(REAL_C(0.0), REAL_C(0.0), REAL_C(0.0));
+		/* A random rotation from a random unit quaternion. */
+		for (k = 0; k < 4; k++) {
+			q[k] = test_random_range(-1.0, 1.0);
+			n2 += q[k] * q[k];
+		}
+		for (k = 0; k < 4; k++)
+			q[k] /= sqrt(n2);
+		axis[0][0] = 1 - 2 * (q[2] * q[2] + q[3] * q[3]);
+		axis[0][1] = 2 * (q[1] * q[2] + q[0] * q[3]);
+		axis[0][2] = 2 * (q[1] * q[3] - q[0] * q[2]);
+		axis[1][0] = 2 * (q[1] * q[2] - q[0] * q[3]);
+		axis[1][1] = 1 - 2 * (q[1] * q[1] + q[3] * q[3]);
+		axis[1][2] = 2 * (q[2] * q[3] + q[0] * q[1]);
+		/* The rim from angle 0.05 round to -0.05, then the slit's end at x = end, its
+		 * walls gap / size from the axis: end puts the vertices' mean gap / size
+		 * before it. */
+		for (i = 0; i < 40; i++) {
+			double angle = 0.05 + (6.283185307179586 - 0.1) * i / 39;
+			pts[i][0] = cos(angle);
+			pts[i][1] = sin(angle);
+			sum += pts[i][0];
+		}
+		end = (sum - 42.0 * gap / size) / 40.0;
+		pts[40][0] = pts[41][0] = end;
+		pts[40][1] = -gap / size;
+		pts[41][1] = gap / size;
+		at = (size_t)snprintf(text, sizeof text,
+				      "v\nfrom 0 0 10\nat 0 0 0\nup 0 1 0\nangle 30\nhither 1\n"
+				      "resolution 8 8\nl 0 0 10\nf 1 1 1 1 0 0 0 1\np 42\n");
+		for (i = 0; i < 42 && at < sizeof text; i++) {
+			double x = size * pts[i][0], y = size * pts[i][1];
+			int n = snprintf(text + at, sizeof text - at, "%.17g %.17g %.17g\n",
+					 x * axis[0][0] + y * axis[1][0], x * axis[0][1] + y * axis[1][1],
+					 x * axis[0][2] + y * axis[1][2]);
+			at = n > 0 ? at + (size_t)n : at;
+		}
+		if (!CHECK(test_parse_buffer(&s, "slit.nff", text, NULL, NULL)))
+			return;
+		o = &s.objects[0];
+		for (i = 0; i < 42; i++)
+			centre = vec_add(centre, s.vertices[o->u.polygon.first + i]);
+		centre = vec_scale(centre, REAL_C(1.0) / 42);
+		for (i = 0; i < 20; i++) {
+			vec3 front = dir_to_vec(o->u.polygon.normal), target = centre, from;
+			if (i > 0)
+				target = vec_add(centre, vec_make(test_real(test_random_range(-1e-3, 1e-3) * size),
+								  test_real(test_random_range(-1e-3, 1e-3) * size),
+								  test_real(test_random_range(-1e-3, 1e-3) * size)));
+			from = vec_add(target, vec_scale(front, test_real(2.0 * size)));
+			tally_ray(i > 0 ? &tally : &at_centroid, o, from, target);
+		}
+	}
+	CHECK_INT(tally.rays, 760);
+	CHECK(tally.inside > 400); /* around the centroid: the polygon, but for the slit */
+	CHECK_INT(tally.disagree, 0);
+	CHECK_INT(at_centroid.rays, 40);
+	CHECK_INT(at_centroid.inside, 0); /* in the slit */
+	CHECK_INT(at_centroid.disagree, 0);
+}
+
 void suite_polygon(void)
 {
 	scene_init(&s, "polygon");
@@ -816,4 +902,5 @@ void suite_polygon(void)
 	test_collinear();
 	test_runs();
 	test_discs();
+	test_disc_slit();
 }
