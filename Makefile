@@ -78,9 +78,9 @@ include mk/variants.mk mk/mcu.mk mk/dev.mk
 # Everything tests/run.sh runs; MemorySanitizer's builds where clang is present
 # (MSAN_TEST, mk/variants.mk), the MCU's where the cross compiler is (MCU_TEST, mk/mcu.mk).
 test: rt build/unit-tests build/san/rt build/san/unit-tests build/san/replay build/san/replay-fixed \
-      build/unit-tests-float build/unit-tests-ref build/unit-tests-scalar build/unit-tests-sse build/unit-tests-fixed build/san/unit-tests-fixed \
-      build/rt-fixed build/rt-ref build/rt-float build/rt-small build/rt-limits $(MSAN_TEST) \
-      $(MCU_TEST)
+      build/unit-tests-float build/unit-tests-ref build/unit-tests-scalar build/unit-tests-sse \
+      build/unit-tests-fixed build/san/unit-tests-fixed build/rt-fixed build/rt-ref \
+      build/rt-float build/rt-small build/rt-limits $(MSAN_TEST) $(MCU_TEST)
 	@sh tests/run.sh
 
 install: rt

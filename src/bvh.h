@@ -88,7 +88,7 @@ static inline real bvh_bound(const bvh_node *n, int side, int axis)
  * grandchildren until it has WIDE_LANES (or only leaves left). Its boxes are the binary
  * nodes' rounded outwards to float, so that a box may be too big but never too small;
  * they are stored by row, box[2 axis + side][lane] (side 0 the lower bound, 1 the upper),
- * so that a row of four lanes is one load. */
+ * so that four lanes of a row (SSE) or all eight (AVX) are one load. */
 typedef struct {
 	float box[6][WIDE_LANES];
 	int child[WIDE_LANES]; /* inner lane: a wide node; leaf lane: the first slot in the

@@ -1,7 +1,7 @@
 /* bvh_build.c - builds the bounding volume hierarchy over the scene's objects, in static
  * arrays, once after parsing: a binary tree by the binned surface area heuristic, then
  * (floating-point types) the same tree collapsed into nodes of WIDE_LANES children, whose
- * float boxes bvh.c tests four at a time.
+ * float boxes bvh.c tests several at once.
  * See LICENSE for copyright and licence. */
 #include "bvh.h"
 

@@ -68,6 +68,20 @@ static TRAVERSE_TARGET real TRAVERSE(const scene *s, const bvh_tree *t, const ra
 		else                                                                          \
 			VISIT_NEAREST(o);                                                     \
 	} while (0)
+	/* Visits a wide leaf lane's objects (`count` of them from slot `child` of the index,
+	 * or with count WIDE_ONE_OBJECT the object `child`), then narrows the float limit to
+	 * the nearest hit. */
+#define VISIT_LEAF(child, count)                                                              \
+	do {                                                                                  \
+		int leaf_ = (child), count_ = (count);                                        \
+		if (count_ == WIDE_ONE_OBJECT)                                                \
+			VISIT(leaf_);                                                         \
+		else                                                                          \
+			for (i = leaf_; i < leaf_ + count_; i++)                              \
+				VISIT(t->index[i]);                                           \
+		if (!shadow)                                                                  \
+			limit = wide_limit(tmax);                                             \
+	} while (0)
 
 	for (i = 0; i < t->unbounded_count; i++)
 		VISIT(t->index[i]);
@@ -97,19 +111,8 @@ static TRAVERSE_TARGET real TRAVERSE(const scene *s, const bvh_tree *t, const ra
 				 * box of a patch met at the very distance of the nearest hit). */
 				if (!shadow && (real)wide_stack[top].enter > tmax * (real)WIDE_SLACK)
 					continue;
-				if (wide_stack[top].count == WIDE_ONE_OBJECT) {
-					VISIT(wide_stack[top].child);
-					if (!shadow)
-						limit = wide_limit(tmax);
-					continue;
-				}
 				if (wide_stack[top].count) {
-					int first = wide_stack[top].child;
-					int last = first + wide_stack[top].count;
-					for (i = first; i < last; i++)
-						VISIT(t->index[i]);
-					if (!shadow)
-						limit = wide_limit(tmax);
+					VISIT_LEAF(wide_stack[top].child, wide_stack[top].count);
 					continue;
 				}
 				current = wide_stack[top].child;
@@ -158,19 +161,10 @@ static TRAVERSE_TARGET real TRAVERSE(const scene *s, const bvh_tree *t, const ra
 			}
 			top += k - 1;
 			near = order[k - 1];
-			if (!node->count[near]) {
+			if (!node->count[near])
 				current = node->child[near];
-			} else if (node->count[near] == WIDE_ONE_OBJECT) {
-				VISIT(node->child[near]);
-				if (!shadow)
-					limit = wide_limit(tmax);
-			} else {
-				int first = node->child[near], last = first + node->count[near];
-				for (i = first; i < last; i++)
-					VISIT(t->index[i]);
-				if (!shadow)
-					limit = wide_limit(tmax);
-			}
+			else
+				VISIT_LEAF(node->child[near], node->count[near]);
 		}
 		return pass;
 	}
@@ -218,6 +212,7 @@ static TRAVERSE_TARGET real TRAVERSE(const scene *s, const bvh_tree *t, const ra
 		}
 	}
 #undef VISIT
+#undef VISIT_LEAF
 #undef VISIT_NEAREST
 #undef VISIT_SHADOW
 	return pass;

@@ -20,8 +20,6 @@ typedef long (*read_block_fn)(void *ctx, unsigned char *to, long max);
 
 #define NO_BYTE (-2) /* nothing pushed back */
 
-#define NO_BYTE (-2) /* nothing pushed back */
-
 typedef struct {
 	read_fn read;
 	void *ctx;

@@ -294,6 +294,13 @@ static vec3 centroid_of(const vec3 *v, int count)
  * grazing than REACH_COS take the crossings test. */
 #define DISC_ROUNDING (REAL_C(1024.0) * REAL_EPSILON)
 
+/* How far inside every edge a ray down the normal must meet the plane for the crossings
+ * test's answer to be certain, for coordinates of size `size` (over |cos| for other rays). */
+static real disc_margin(const polygon_shape *poly, real size)
+{
+	return poly->spread + poly->spread + DISC_ROUNDING * size;
+}
+
 /* Distance from p to the segment [a, b]. */
 static real segment_distance(vec3 p, vec3 a, vec3 b)
 {
@@ -326,7 +333,7 @@ static void disc_init(scene *s, const polygon_shape *poly, vec3 centroid)
 	radius = (radius - poly->spread) * (REAL_C(1.0) - REAL_C(1.0) / 1024);
 	s->disc_centre[slot] = centroid;
 	s->disc_reach[slot] = reach;
-	s->disc_radius[slot] = radius > poly->spread + poly->spread + DISC_ROUNDING * size &&
+	s->disc_radius[slot] = radius > disc_margin(poly, size) &&
 					       contains_ray(v, poly->count, &along, NULL, 0)
 				       ? radius
 				       : REAL_C(0.0);
@@ -458,23 +465,28 @@ real polygon_clearance(const scene *s, const polygon_shape *g, const vec3 *p)
 }
 
 #if POLYGON_DISCS
-/* Does the ray, which meets the plane of big polygon `poly` at t, with `cosine` the
- * cosine of its angle to the normal, meet it well inside its disc? */
+/* Does the ray, which meets the plane of polygon `poly` at t, with `cosine` the cosine
+ * of its angle to the normal, meet it well inside its disc (a big polygon's)? */
 static int deep_inside(const scene *s, const polygon_shape *poly, const ray *r, real t,
 		       unit cosine)
 {
 	int slot = (poly->first + 1) / RT_POLYGON_RUN;
-	real radius = s->disc_radius[slot], size, margin;
+	real radius, size;
 	vec3 off;
+	if (poly->count <= RT_POLYGON_RUN)
+		return 0;
+	radius = s->disc_radius[slot];
 	if (!(radius > 0) || !(unit_fabs(cosine) >= REACH_COS))
 		return 0;
 	size = real_max(vec_max_abs(r->origin),
 			vec_max_abs(s->disc_centre[slot]) + s->disc_reach[slot]);
-	margin = (poly->spread + poly->spread + DISC_ROUNDING * size) / unit_to_real(unit_fabs(cosine));
-	radius -= margin;
+	radius -= disc_margin(poly, size) / unit_to_real(unit_fabs(cosine));
 	off = vec_sub(dir_madd(r->origin, t, r->dir), s->disc_centre[slot]);
 	return radius > 0 && vec_dot2(off, off) < real_mul2(radius, radius);
 }
+#else
+/* Fixed point (and the MCU) keeps the crossings test for every hit. */
+#define deep_inside(s, poly, r, t, cosine) 0
 #endif
 
 /* ---- intersection --------------------------------------------------------------- */
@@ -496,14 +508,9 @@ int polygon_intersect(const scene *s, const object *o, const ray *r, real tmin, 
 	t = real_div_unit(plane_gap(poly->normal, poly->offset, &r->origin), denom);
 	if (!(t > tmin && t < tmax))
 		return 0;
-#if POLYGON_DISCS
-	if (!(poly->count > RT_POLYGON_RUN && deep_inside(s, poly, r, t, denom)) &&
+	if (!deep_inside(s, poly, r, t, denom) &&
 	    !contains_ray(s->vertices + poly->first, poly->count, r, s, poly->first))
 		return 0;
-#else
-	if (!contains_ray(s->vertices + poly->first, poly->count, r, s, poly->first))
-		return 0;
-#endif
 	/* A grazing ray may meet the plane far off a non-planar polygon (see polygon_bounds):
 	 * a hit beyond the box is none. The MCU build, which has no hierarchy, leaves this
 	 * out for flash (docs/mcu.md). */
