@@ -7,6 +7,7 @@
 
 #include "box.h"
 #include "intersect.h"
+#include "pages.h"
 
 
 #define BINS 16    /* SAH candidate planes per axis, minus one */
@@ -386,6 +387,7 @@ static void build_node(bvh_tree *t, int node, int first, int count, const item_b
 	n->start = t->node_count;
 	n->count = 0;
 	n->axis = (short)axis;
+	pages_ahead(t->nodes, sizeof t->nodes[0], (size_t)t->node_count, 2, 2 * RT_MAX_OBJECTS);
 	t->node_count += 2;
 	build_node(t, n->start, first, left, &child[0], depth + 1);
 	build_node(t, n->start + 1, first + left, count - left, &child[1], depth + 1);
@@ -408,6 +410,7 @@ static void wide_fill(bvh_tree *t, int w, const int *lane, int n);
 static int wide_collapse(bvh_tree *t, int b)
 {
 	int lane[WIDE_LANES], n = 0, w = t->wide_count++;
+	pages_ahead(t->wide, sizeof t->wide[0], (size_t)w, 1, BVH_WIDE_NODES);
 	if (t->nodes[b].count) {
 		lane[n++] = b;
 	} else {
@@ -463,6 +466,9 @@ void bvh_build(bvh_tree *t, const scene *s)
 	t->wide_count = 0;
 	if (s->object_count < RT_BVH_MIN_OBJECTS)
 		return;
+	pages_prepare(items, (size_t)s->object_count * sizeof items[0]);
+	pages_prepare(bounded, (size_t)s->object_count);
+	pages_prepare(t->index, (size_t)s->object_count * sizeof t->index[0]);
 	for (i = 0; i < s->object_count; i++) {
 		vec3 lo, hi;
 		bounded[i] = shape_bounds(s, &s->objects[i], &lo, &hi) && vec_is_finite(lo) &&

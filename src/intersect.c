@@ -3,6 +3,8 @@
  * See LICENSE for copyright and licence. */
 #include "intersect.h"
 
+#include "pages.h"
+
 /* The shape's own test, inlined into the scene's loops below (on the M0 a call more per
  * object and ray was a tenth of all the work). Without origin terms (k NULL) the sphere
  * and plane tests make their own. */
@@ -70,6 +72,7 @@ void origin_terms_init(const scene *s, vec3 origin, origin_terms *k)
 {
 	int i;
 	k->candidates = ~(uint32_t)0;
+	pages_prepare(k->terms, (size_t)s->object_count * sizeof k->terms[0]);
 	for (i = 0; i < s->object_count; i++)
 		object_origin_term(&s->objects[i], origin, &k->terms[i]);
 }

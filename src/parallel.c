@@ -44,6 +44,7 @@
 #include "antialias.h"
 #include "diag.h"
 #include "output.h"
+#include "pages.h"
 
 #if !defined(MAP_ANONYMOUS) && defined(MAP_ANON)
 #define MAP_ANONYMOUS MAP_ANON
@@ -206,6 +207,16 @@ static void unshare_pool(void)
 	pool_ids = NULL;
 }
 
+/* Makes the window's part of the pool ready in this process's view of it: the parent's
+ * before the fork, a worker's as it starts (a fork maps shared memory afresh, and its
+ * pages would fault one by one). */
+static void window_prepare(const job *jb)
+{
+	size_t slots = (size_t)window.size * jb->slot_length;
+	pages_prepare(pool, slots * sizeof *pool);
+	pages_prepare(pool_ids, slots * sizeof *pool_ids);
+}
+
 /* Traces a unit into its slot of the window: line y, or (-a) row y refined from its two
  * corner lines, which are in the window already. */
 static void do_unit(const job *jb, tracer *t, int kind, int y)
@@ -286,6 +297,7 @@ static int start_worker(int i, const job *jb)
 		for (j = 0; j < i; j++)
 			close(workers[j].socket);
 		close(ends[0]);
+		window_prepare(jb);
 		work(jb, ends[1]);
 	}
 	close(ends[1]);
@@ -467,6 +479,7 @@ int render_parallel(tracer *t, const camera *c, enum render_sampling sampling,
 	if (jobs <= 1 || !share_pool())
 		return aa ? render_adaptive(t, c, aa, y0, y1, out, progress, progress_ctx)
 			  : render_image(t, c, sampling, y0, y1, out, progress, progress_ctx);
+	window_prepare(&jb);
 	if (!out->begin(out, c->width, y1 - y0)) {
 		unshare_pool();
 		return 0;

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "colour.h"
+#include "pages.h"
 #include "parser.h"
 #include "shape.h"
 
@@ -78,6 +79,7 @@ object *parser_new_object(parser *p, unsigned char kind, int line)
 		parser_capacity_error(p, line, "objects", "RT_MAX_OBJECTS", RT_MAX_OBJECTS);
 		return NULL;
 	}
+	pages_ahead(s->objects, sizeof s->objects[0], (size_t)s->object_count, 1, RT_MAX_OBJECTS);
 	o = &s->objects[s->object_count++];
 	memset(o, 0, sizeof *o);
 	o->kind = kind;

@@ -3,6 +3,7 @@
  * shows the inside; a degenerate shape is skipped with a warning) and leaves the geometry
  * to the shape's own set-up (shape.h).
  * See LICENSE for copyright and licence. */
+#include "pages.h"
 #include "parser.h"
 
 #include "shape.h"
@@ -47,6 +48,7 @@ int parse_polygon(parser *p, int patch)
 	if (count > RT_MAX_VERTICES - s->vertex_count)
 		return parser_capacity_error(p, line, "polygon vertices in the scene", "RT_MAX_VERTICES",
 				      RT_MAX_VERTICES);
+	pages_ahead(s->vertices, sizeof s->vertices[0], (size_t)first, (size_t)count, RT_MAX_VERTICES);
 	for (i = 0; i < count; i++) {
 		if (!lexer_read_triple(&p->lx, patch ? "patch vertex" : "polygon vertex", 1,
 			      &s->vertices[first + i]))
@@ -127,6 +129,7 @@ static int add_halfspace(parser *p, vec3 n, real d, int line)
 	if (s->plane_count == RT_MAX_PLANES)
 		return parser_capacity_error(p, line, "polyhedron planes in the scene", "RT_MAX_PLANES",
 				      RT_MAX_PLANES);
+	pages_ahead(s->planes, sizeof s->planes[0], (size_t)s->plane_count, 1, RT_MAX_PLANES);
 	hedron_plane_init(&s->planes[s->plane_count++], n, length2, d);
 	return 1;
 }
