@@ -497,6 +497,7 @@ void bvh_build(bvh_tree *t, const scene *s)
 			items[--next] = items[i];
 	if (next == s->object_count)
 		return;
+	pages_ahead(t->nodes, sizeof t->nodes[0], 0, 1, 2 * RT_MAX_OBJECTS); /* the root */
 	t->node_count = 1;
 	{
 		int count = s->object_count - t->unbounded_count;

@@ -56,6 +56,9 @@
 #ifndef RT_MAX_MEDIA
 #define RT_MAX_MEDIA 8 /* nested transmitting objects a ray can be inside at once */
 #endif
+#ifndef RT_MAX_JOBS
+#define RT_MAX_JOBS 64 /* processes a render runs at once (-j): the parent and its workers */
+#endif
 #ifndef RT_PARALLEL_POOL
 /* -j's pool, in colours (and as many ids), which holds the window: four lines a process
  * and two more, of the image's width (twice that with -a); mapped shared with the workers,

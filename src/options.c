@@ -47,7 +47,7 @@ static const char usage_text[] =
 		ANTIALIAS_MAX_DEPTH) " (default 2:\n"
 	"               up to 25 rays a pixel; 4: 289) (implies -a)\n"
 	"  -j, --jobs N render with N processes, 1 to " RT_STRINGIFY(
-		PARALLEL_MAX_JOBS) " (default: one per\n"
+		RT_MAX_JOBS) " (default: one per\n"
 	"               processor online); the image is the same for every N\n"
 	"  --ascii      ASCII-art preview (7-bit, no escape sequences)\n"
 	"  --ansi       colour preview with half-blocks (24-bit if COLORTERM says so,\n"
@@ -311,9 +311,9 @@ static int take_option(options *o, enum option_id id, const char *value, const c
 					   value);
 		return -1;
 	case OPT_JOBS:
-		if (!parse_int(value, '\0', 1, PARALLEL_MAX_JOBS, &o->jobs, NULL))
+		if (!parse_int(value, '\0', 1, RT_MAX_JOBS, &o->jobs, NULL))
 			return usage_error("bad job count '%s' (expected 1 to " RT_STRINGIFY(
-						   PARALLEL_MAX_JOBS) ")",
+						   RT_MAX_JOBS) ")",
 					   value);
 		return -1;
 	case OPT_AA_DEPTH:

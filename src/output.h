@@ -43,7 +43,7 @@ int output_time_limit(const char *scene, unsigned long long micros, const char *
 void output_erase_on_end(const volatile sig_atomic_t *line_drawn);
 
 /* A function that a signal ending the run, or the time limit, calls first (it must be
- * async-signal-safe): parallel.c's, which stops the workers. NULL for none. */
+ * async-signal-safe): workers_stop (workers.c), which stops -j's workers. NULL for none. */
 void output_on_end(void (*stop)(void));
 
 /* In a forked worker: the parent's signal handlers (put back as they were before rt),

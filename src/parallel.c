@@ -20,10 +20,7 @@
  * A line depends on its number alone (render.h), so the bytes are those of -j 1 whichever
  * worker traced it.
  *
- * Ending: a worker that reads end of file where its next line number would be (the parent
- * done, or gone) ends; a signal that ends the parent stops the workers first (output.c's
- * handlers call parallel_stop); the parent reaps every worker before it returns, and one
- * that ends early fails the render with one message.
+ * The worker processes themselves, their sockets and their ending are workers.c's.
  * See LICENSE for copyright and licence. */
 #define _POSIX_C_SOURCE 200809L
 #define _DEFAULT_SOURCE 1 /* MAP_ANONYMOUS, which POSIX names only from its 2024 issue */
@@ -31,20 +28,15 @@
 #include "parallel.h"
 
 #include <errno.h>
-#include <fcntl.h>
-#include <poll.h>
-#include <signal.h>
 #include <string.h>
 #include <sys/mman.h>
-#include <sys/socket.h>
-#include <sys/types.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include "antialias.h"
 #include "diag.h"
 #include "output.h"
 #include "pages.h"
+#include "workers.h"
 
 #if !defined(MAP_ANONYMOUS) && defined(MAP_ANON)
 #define MAP_ANONYMOUS MAP_ANON
@@ -69,32 +61,12 @@ static int no_ids[RT_MAX_WIDTH]; /* -a's rows: four or more rays a pixel, no one
 /* The window's most slots: lines may run ahead of the row that leaves next by up to
  * WINDOW_PER_JOB a process (a worker's units and the parent's one). */
 #define WINDOW_PER_JOB (UNITS_PER_WORKER + 1)
-#define WINDOW_MAX (PARALLEL_MAX_JOBS * WINDOW_PER_JOB + 2)
+#define WINDOW_MAX (RT_MAX_JOBS * WINDOW_PER_JOB + 2)
 
 enum unit_kind {
 	UNIT_LINE, /* trace sample line `index` (render_line) */
 	UNIT_ROW   /* -a: refine pixel row `index` from its two corner lines, sent after */
 };
-
-/* A unit of work, as the parent sends it; and, with the worker's counts so far, as the
- * worker sends it back when its line or row is in the window. */
-typedef struct {
-	int kind;
-	int index;
-	trace_stats stats;
-} work_unit;
-
-typedef struct {
-	pid_t pid;
-	int socket;        /* units out, results in */
-	int in_flight;     /* units handed out and not yet back */
-	trace_stats stats; /* the worker's counts so far */
-} worker;
-
-static worker workers[PARALLEL_MAX_JOBS];
-static int worker_count;
-/* The workers' process IDs, for parallel_stop in a signal handler; 0 where none. */
-static volatile sig_atomic_t worker_pids[PARALLEL_MAX_JOBS];
 
 /* What a render asks for, shared by the parent and (copied by fork) the workers. */
 typedef struct {
@@ -111,49 +83,7 @@ typedef struct {
 int parallel_default_jobs(void)
 {
 	long online = sysconf(_SC_NPROCESSORS_ONLN);
-	return online < 1 ? 1 : online > PARALLEL_MAX_JOBS ? PARALLEL_MAX_JOBS : (int)online;
-}
-
-/* Stops every worker; async-signal-safe (kill only). */
-static void parallel_stop(void)
-{
-	int i;
-	for (i = 0; i < PARALLEL_MAX_JOBS; i++)
-		if (worker_pids[i] > 0)
-			kill((pid_t)worker_pids[i], SIGTERM);
-}
-
-/* Reads exactly n bytes; 0 at end of file or on an error. */
-static int read_full(int fd, void *data, size_t n)
-{
-	unsigned char *p = data;
-	while (n > 0) {
-		ssize_t got = read(fd, p, n);
-		if (got < 0 && errno == EINTR)
-			continue;
-		if (got <= 0)
-			return 0;
-		p += got;
-		n -= (size_t)got;
-	}
-	return 1;
-}
-
-/* Writes n bytes, with send's flags (the parent's MSG_NOSIGNAL: a worker that has ended
- * is an error to report, not a SIGPIPE that ends rt). 0 on an error. */
-static int send_full(int fd, const void *data, size_t n, int flags)
-{
-	const unsigned char *p = data;
-	while (n > 0) {
-		ssize_t sent = send(fd, p, n, flags);
-		if (sent < 0 && errno == EINTR)
-			continue;
-		if (sent <= 0)
-			return 0;
-		p += sent;
-		n -= (size_t)sent;
-	}
-	return 1;
+	return online < 1 ? 1 : online > RT_MAX_JOBS ? RT_MAX_JOBS : (int)online;
 }
 
 /* The window: slot k holds line y0 + k + m window for some m, and with -a the row of the
@@ -212,7 +142,9 @@ static void unshare_pool(void)
  * pages would fault one by one). */
 static void window_prepare(const job *jb)
 {
-	size_t slots = (size_t)window.size * jb->slot_length;
+	/* The slots the render's lines reach: fewer than the window's for a short image. */
+	int used = jb->end - window.first < window.size ? jb->end - window.first : window.size;
+	size_t slots = (size_t)used * jb->slot_length;
 	pages_prepare(pool, slots * sizeof *pool);
 	pages_prepare(pool_ids, slots * sizeof *pool_ids);
 }
@@ -228,188 +160,55 @@ static void do_unit(const job *jb, tracer *t, int kind, int y)
 			      line_colours(jb, y + 1), line_ids(jb, y + 1), row_colours(jb, y));
 }
 
-/* The worker's life: units in, done, back with the counts so far, until the parent
- * closes its end. */
-static void work(const job *jb, int fd)
+/* The workers' side of a unit (worker_task): the window ready as a worker starts, its
+ * counts from zero; then each unit the parent sends, if it is one the parent could send
+ * (else the worker ends before it writes outside the window). */
+static void worker_begin(void *ctx)
 {
-	work_unit u;
-	memset(&u, 0, sizeof u); /* its padding too: all of it is sent */
+	const job *jb = ctx;
+	window_prepare(jb);
 	memset(&jb->t->stats, 0, sizeof jb->t->stats);
-	while (read_full(fd, &u, sizeof u)) {
-		/* Only what the parent sends; anything else (nothing should be) ends the worker
-		 * before it writes outside the window. */
-		if ((u.kind != UNIT_LINE && u.kind != UNIT_ROW) || u.index < window.first ||
-		    u.index + (u.kind == UNIT_ROW) >= jb->end)
-			_exit(1);
-		do_unit(jb, jb->t, u.kind, u.index);
-		u.stats = jb->t->stats;
-		if (!send_full(fd, &u, sizeof u, 0))
-			_exit(1);
-	}
-	_exit(0);
 }
 
-/* fd moved above standard input, output and error (closed, fd itself); -1 when it
- * cannot be. With one of those closed, socketpair hands out its number, and rt's image
- * (or a read of its input) would go to a worker's socket. */
-static int above_standard(int fd)
+static int worker_unit(void *ctx, const work_unit *u)
 {
-	int moved;
-	if (fd > STDERR_FILENO)
-		return fd;
-	moved = fcntl(fd, F_DUPFD, STDERR_FILENO + 1);
-	close(fd);
-	return moved;
-}
-
-/* Forks worker i. 0, with errno, when it cannot. */
-static int start_worker(int i, const job *jb)
-{
-	int ends[2];
-	pid_t pid;
-	if (socketpair(AF_UNIX, SOCK_STREAM, 0, ends) != 0)
+	const job *jb = ctx;
+	if ((u->kind != UNIT_LINE && u->kind != UNIT_ROW) || u->index < window.first ||
+	    u->index + (u->kind == UNIT_ROW) >= jb->end)
 		return 0;
-	ends[0] = above_standard(ends[0]);
-	ends[1] = above_standard(ends[1]);
-	if (ends[0] < 0 || ends[1] < 0) {
-		int saved = errno;
-		if (ends[0] >= 0)
-			close(ends[0]);
-		if (ends[1] >= 0)
-			close(ends[1]);
-		errno = saved;
-		return 0;
-	}
-	pid = fork();
-	if (pid < 0) {
-		int saved = errno;
-		close(ends[0]);
-		close(ends[1]);
-		errno = saved;
-		return 0;
-	}
-	if (pid == 0) {
-		int j;
-		/* The parent's signal handlers, temporary file and other workers' sockets are
-		 * not this process's: a worker ends as signals end any process, and sees end
-		 * of file when the parent closes its own socket. */
-		output_forget();
-		for (j = 0; j < i; j++)
-			close(workers[j].socket);
-		close(ends[0]);
-		window_prepare(jb);
-		work(jb, ends[1]);
-	}
-	close(ends[1]);
-	workers[i].pid = pid;
-	workers[i].socket = ends[0];
-	workers[i].in_flight = 0;
-	memset(&workers[i].stats, 0, sizeof workers[i].stats);
-	worker_pids[i] = (sig_atomic_t)pid;
-	worker_count = i + 1;
+	do_unit(jb, jb->t, u->kind, u->index);
 	return 1;
 }
 
-/* Closes every socket and waits for every worker; with `stop`, ends them first. Reports
- * the first worker that did not end normally, or, when `culprit` is one, that one.
- * Returns 1 when every worker ended normally. */
-static int finish_workers(int stop, int culprit)
+/* The parent's side of a result: its line or row is in the window. 0 for one no worker
+ * was asked for. */
+static int accept_result(void *ctx, const work_unit *u)
 {
-	int i, status, fine = 1;
-	if (stop)
-		parallel_stop();
-	for (i = 0; i < worker_count; i++)
-		close(workers[i].socket);
-	for (i = 0; i < worker_count; i++) {
-		int report;
-		while (waitpid(workers[i].pid, &status, 0) < 0 && errno == EINTR)
-			;
-		worker_pids[i] = 0;
-		/* Stopped: the one that failed; otherwise any that did not end normally. */
-		report = stop ? i == culprit : !WIFEXITED(status) || WEXITSTATUS(status) != 0;
-		if (!report)
-			continue;
-		if (fine && WIFSIGNALED(status))
-			diag_error(NULL, 0, "worker process %d of %d (pid %ld) was ended by signal %d "
-					    "(%s)",
-				   i + 1, worker_count, (long)workers[i].pid, WTERMSIG(status),
-				   strsignal(WTERMSIG(status)));
-		else if (fine)
-			diag_error(NULL, 0, "worker process %d of %d (pid %ld) ended early, status %d",
-				   i + 1, worker_count, (long)workers[i].pid,
-				   WIFEXITED(status) ? WEXITSTATUS(status) : -1);
-		fine = 0;
-	}
-	worker_count = 0;
-	output_on_end(NULL);
-	unshare_pool();
-	return fine;
-}
-
-/* Takes one result from worker w: its line or row is in the window. 0 when the worker
- * has ended or says it did what it was not asked to. */
-static int receive(worker *w, int end)
-{
-	work_unit u;
+	const job *jb = ctx;
 	int slot;
-	if (!read_full(w->socket, &u, sizeof u) || u.index < window.first || u.index >= end)
+	if (u->index < window.first || u->index >= jb->end)
 		return 0;
-	slot = slot_of(u.index);
-	if (u.kind == UNIT_LINE) {
+	slot = slot_of(u->index);
+	if (u->kind == UNIT_LINE) {
 		if (window.line_done[slot])
 			return 0;
 		window.line_done[slot] = 1;
 	} else {
-		if (u.kind != UNIT_ROW || !window.row_sent[slot] || window.row_done[slot])
+		if (u->kind != UNIT_ROW || !window.row_sent[slot] || window.row_done[slot])
 			return 0;
 		window.row_done[slot] = 1;
 	}
-	w->in_flight--;
-	w->stats = u.stats;
 	return 1;
 }
 
-/* Takes every result worker w has sent so far (one at least: it is ready). Taking one a
- * round left the others waiting in the socket while the parent traced its next line,
- * and the worker, its units done, idle: one line for each of the parent's, however much
- * cheaper its own. 0 as receive. */
-static int receive_all(worker *w, int end)
+/* Reaps the workers (ending them first with `stop`; workers_finish) and gives back what
+ * the render took: 1 when every worker ended normally. */
+static int finish(int stop, int culprit)
 {
-	struct pollfd more;
-	more.fd = w->socket;
-	more.events = POLLIN;
-	do {
-		if (!receive(w, end))
-			return 0;
-	} while (w->in_flight > 0 && poll(&more, 1, 0) > 0);
-	return 1;
-}
-
-/* Sends worker w a unit. 0 if the worker has ended. */
-static int hand_out(worker *w, int kind, int index)
-{
-	work_unit u;
-	memset(&u, 0, sizeof u);
-	u.kind = kind;
-	u.index = index;
-	if (!send_full(w->socket, &u, sizeof u, MSG_NOSIGNAL))
-		return 0;
-	w->in_flight++;
-	return 1;
-}
-
-/* *sum = the parent's own counts and every worker's. */
-static void sum_stats(trace_stats *sum, const trace_stats *own)
-{
-	int i;
-	*sum = *own;
-	for (i = 0; i < worker_count; i++) {
-		sum->eye_rays += workers[i].stats.eye_rays;
-		sum->eye_hits += workers[i].stats.eye_hits;
-		sum->shadow_rays += workers[i].stats.shadow_rays;
-		sum->reflect_rays += workers[i].stats.reflect_rays;
-		sum->refract_rays += workers[i].stats.refract_rays;
-	}
+	int fine = workers_finish(stop, culprit);
+	output_on_end(NULL);
+	unshare_pool();
+	return fine;
 }
 
 /* Is row y's result complete in the window? */
@@ -458,6 +257,7 @@ int render_parallel(tracer *t, const camera *c, enum render_sampling sampling,
 	 * and between units the sum of everyone's (for the progress bar and --stats). */
 	trace_stats own;
 	job jb;
+	worker_task task;
 	int end, next_line = y0, next_row = y0, row = y0, i, k, fitting;
 	jb.t = t;
 	jb.c = c;
@@ -487,10 +287,12 @@ int render_parallel(tracer *t, const camera *c, enum render_sampling sampling,
 	for (i = 0; i < c->width; i++)
 		no_ids[i] = -1;
 	own = t->stats;
-	output_on_end(parallel_stop);
-	while (worker_count < jobs - 1 && start_worker(worker_count, &jb))
-		;
-	if (worker_count == 0) {
+	output_on_end(workers_stop);
+	task.begin = worker_begin;
+	task.work = worker_unit;
+	task.ctx = &jb;
+	task.counts = &t->stats;
+	if (workers_start(jobs - 1, &task) == 0) {
 		diag_error(NULL, 0, "cannot start a worker process: %s", strerror(errno));
 		output_on_end(NULL);
 		unshare_pool();
@@ -500,16 +302,15 @@ int render_parallel(tracer *t, const camera *c, enum render_sampling sampling,
 	memset(window.row_sent, 0, sizeof window.row_sent);
 	memset(window.row_done, 0, sizeof window.row_done);
 	while (row < y1) {
-		struct pollfd ready[PARALLEL_MAX_JOBS];
-		int waiting[PARALLEL_MAX_JOBS], count = 0, culprit = -1, busy = 0, kind, index;
+		int culprit = -1, busy = 0, kind, index;
 		/* Units to every worker with room, one each in turn. */
 		for (k = 1; culprit < 0 && k <= UNITS_PER_WORKER; k++)
-			for (i = 0; culprit < 0 && i < worker_count; i++) {
-				if (workers[i].in_flight >= k)
+			for (i = 0; culprit < 0 && i < workers_count(); i++) {
+				if (workers_in_flight(i) >= k)
 					continue;
 				if (!next_unit(&jb, next_line, next_row, row, end, y1, &kind, &index))
 					break;
-				if (!hand_out(&workers[i], kind, index))
+				if (!workers_hand_out(i, kind, index))
 					culprit = i;
 				else
 					take_unit(kind, &next_line, &next_row);
@@ -527,27 +328,18 @@ int render_parallel(tracer *t, const camera *c, enum render_sampling sampling,
 				window.line_done[slot_of(index)] = 1;
 			busy = 1;
 		}
-		for (i = 0; culprit < 0 && i < worker_count; i++)
-			if (workers[i].in_flight > 0) {
-				ready[count].fd = workers[i].socket;
-				ready[count].events = POLLIN;
-				waiting[count++] = i;
-			}
-		if (culprit < 0 && count > 0 && poll(ready, (nfds_t)count, busy ? 0 : -1) < 0) {
+		if (culprit < 0 && workers_receive(!busy, accept_result, &jb, &culprit) < 0) {
 			if (errno == EINTR)
 				continue;
 			diag_error(NULL, 0, "waiting for the workers: %s", strerror(errno));
-			finish_workers(1, -1);
+			finish(1, -1);
 			return -1;
 		}
-		for (k = 0; culprit < 0 && k < count; k++)
-			if (ready[k].revents && !receive_all(&workers[waiting[k]], end))
-				culprit = waiting[k];
 		if (culprit >= 0) {
-			finish_workers(1, culprit);
+			finish(1, culprit);
 			return -1;
 		}
-		sum_stats(&t->stats, &own);
+		workers_sum_stats(&t->stats, &own);
 		/* The rows now complete leave in order. */
 		while (row < y1 && row_ready(&jb, row)) {
 			vec3 *colours = aa ? row_colours(&jb, row) : line_colours(&jb, row);
@@ -555,7 +347,7 @@ int render_parallel(tracer *t, const camera *c, enum render_sampling sampling,
 			if (jb.corners && !aa)
 				render_corner_means(c->width, colours, line_colours(&jb, row + 1), ids);
 			if (!out->row(out, colours, ids)) {
-				finish_workers(1, -1);
+				finish(1, -1);
 				return 0;
 			}
 			window.line_done[slot_of(row)] = 0;
@@ -566,7 +358,7 @@ int render_parallel(tracer *t, const camera *c, enum render_sampling sampling,
 				progress(progress_ctx, row - y0, y1 - y0);
 		}
 	}
-	if (!finish_workers(0, -1))
+	if (!finish(0, -1))
 		return -1;
 	return out->end(out);
 }

@@ -5,10 +5,7 @@
 
 #include "antialias.h"
 
-/* Most processes a render runs (-j): its line window holds four lines for each. */
-#define PARALLEL_MAX_JOBS 64
-
-/* The processors online, at least 1 and at most PARALLEL_MAX_JOBS: -j's default. */
+/* The processors online, at least 1 and at most RT_MAX_JOBS (config.h): -j's default. */
 int parallel_default_jobs(void);
 
 /* render_image (render_adaptive when aa is not NULL) with `jobs` worker processes: the
