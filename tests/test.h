@@ -179,6 +179,7 @@ void suite_deflate(void);
 void suite_camera(void);
 void suite_bvh(void);
 void suite_clearance(void);
+void suite_pages(void);
 void suite_fixed(void);
 void suite_fixed_kernels(void); /* its integer kernels: also run on the MCU */
 
