@@ -10,7 +10,7 @@ BINDIR = $(PREFIX)/bin
 MANDIR = $(PREFIX)/share/man/man1
 
 CC ?= cc
-CFLAGS ?= -O2
+CFLAGS ?= -O3
 WARN = -std=c99 -pedantic -Wall -Wextra -Wshadow -Wdouble-promotion -Wstrict-prototypes \
        -Wmissing-prototypes -Wpointer-arith -Wcast-qual -Wvla -Werror
 # x86-64's default code model holds static data to 2 GiB; rt's capacities (millions of
