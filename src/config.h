@@ -108,6 +108,11 @@
 #ifndef RT_COLOUR_STEPS
 #define RT_COLOUR_STEPS 4096
 #endif
+/* Whether a pixel of its left neighbour's colour takes that one's codes without encoding
+ * (colour.c): a few percent of a scene with much background; 0 saves the MCU its flash. */
+#ifndef RT_COLOUR_REPEATS
+#define RT_COLOUR_REPEATS 1
+#endif
 
 /* The ANSI colour previews; 0 leaves them out (ASCII only) where flash is short. */
 #ifndef RT_PREVIEW_COLOR
