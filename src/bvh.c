@@ -142,14 +142,27 @@ typedef struct {
 	/* The origin, rounded for each plane; 1 / d (+-infinity for a zero component, by
 	 * its sign). A fourth element each, unused, lets SSE store all three at once. */
 	float near_from[4], far_from[4], inv[4];
-	/* Where in a node the box rows of the planes entered first (row 2 axis + (d < 0))
-	 * and left first are: byte offsets, so that a node's test finds each row with one
-	 * addition (wide_row). */
+	/* Where in a node the box rows are of the planes the ray enters by (row 2 axis +
+	 * (1 / d < 0): -0 counts as negative) and of those it leaves by: byte offsets, so
+	 * that a node's test finds each row with one addition (wide_row). */
 	size_t near_row[3], far_row[3];
+#if WIDE_SSE
+	/* The SSE test's copies of near_from, far_from and inv in four lanes, made once a
+	 * search by its own traversal (WIDE_PREPARE): the object tests between two nodes
+	 * leave no vector in a register, and broadcasting nine for each node cost balls
+	 * 1.7 % of its instructions there. AVX's test broadcasts from memory instead. */
+	__m128 near_from4[3], far_from4[3], inv4[3];
+#endif
 } wide_ray;
 
 #define WIDE_LIMIT REAL_C(1.2676506002282294e30) /* 2^100 */
 #define WIDE_ROW (sizeof(float) * WIDE_LANES) /* the bytes of one row of a node's box */
+
+/* Where row `row` of a node's box is, in bytes from the node's start. */
+static inline size_t wide_row_offset(int row)
+{
+	return offsetof(bvh_wide_node, box) + (size_t)row * WIDE_ROW;
+}
 
 /* The row of node n's box `offset` bytes into the node (a wide_ray's near_row, far_row). */
 static inline const float *wide_row(const bvh_wide_node *n, size_t offset)
@@ -213,8 +226,8 @@ static inline int wide_ray_make(wide_ray *w, const ray *r)
 	signs = _mm_movemask_ps(_mm_castsi128_ps(negative));
 	for (axis = 0; axis < 3; axis++) {
 		int neg = (signs >> axis) & 1;
-		w->near_row[axis] = offsetof(bvh_wide_node, box) + (size_t)(2 * axis + neg) * WIDE_ROW;
-		w->far_row[axis] = offsetof(bvh_wide_node, box) + (size_t)(2 * axis + !neg) * WIDE_ROW;
+		w->near_row[axis] = wide_row_offset(2 * axis + neg);
+		w->far_row[axis] = wide_row_offset(2 * axis + !neg);
 	}
 	return 1;
 }
@@ -246,8 +259,8 @@ static inline int wide_axis(wide_ray *w, int axis, real o, unit d)
 	copies[above] = f; /* copies[0] the lower bound, copies[1] the upper */
 	w->inv[axis] = 1.0f / fd; /* a zero keeps its sign: 1 / -0 is -infinity */
 	negative = w->inv[axis] < 0.0f;
-	w->near_row[axis] = offsetof(bvh_wide_node, box) + (size_t)(2 * axis + negative) * WIDE_ROW;
-	w->far_row[axis] = offsetof(bvh_wide_node, box) + (size_t)(2 * axis + !negative) * WIDE_ROW;
+	w->near_row[axis] = wide_row_offset(2 * axis + negative);
+	w->far_row[axis] = wide_row_offset(2 * axis + !negative);
 	/* Entering through the lower plane the origin's upper copy gives the smaller
 	 * distance, and the other way round. */
 	w->near_from[axis] = copies[!negative];
@@ -283,12 +296,12 @@ static inline int wide_hit(const bvh_wide_node *n, const wide_ray *r, float tmax
 		__m128 tnear = _mm_setzero_ps(), tfar = _mm_set1_ps(tmax);
 		int axis;
 		for (axis = 0; axis < 3; axis++) {
-			__m128 t0 = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(wide_row(n, r->near_row[axis]) + group),
-							  _mm_set1_ps(r->near_from[axis])),
-					       _mm_set1_ps(r->inv[axis]));
-			__m128 t1 = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(wide_row(n, r->far_row[axis]) + group),
-							  _mm_set1_ps(r->far_from[axis])),
-					       _mm_set1_ps(r->inv[axis]));
+			const float *lo = wide_row(n, r->near_row[axis]) + group;
+			const float *hi = wide_row(n, r->far_row[axis]) + group;
+			__m128 t0 = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(lo), r->near_from4[axis]),
+					       r->inv4[axis]);
+			__m128 t1 = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(hi), r->far_from4[axis]),
+					       r->inv4[axis]);
 			tnear = _mm_max_ps(t0, tnear);
 			tfar = _mm_min_ps(t1, tfar);
 		}
@@ -304,8 +317,10 @@ static inline int wide_hit(const bvh_wide_node *n, const wide_ray *r, float tmax
 	for (i = 0; i < WIDE_LANES; i++) {
 		float tnear = 0.0f, tfar = tmax;
 		for (axis = 0; axis < 3; axis++) {
-			float t0 = (wide_row(n, r->near_row[axis])[i] - r->near_from[axis]) * r->inv[axis];
-			float t1 = (wide_row(n, r->far_row[axis])[i] - r->far_from[axis]) * r->inv[axis];
+			float lo = wide_row(n, r->near_row[axis])[i];
+			float hi = wide_row(n, r->far_row[axis])[i];
+			float t0 = (lo - r->near_from[axis]) * r->inv[axis];
+			float t1 = (hi - r->far_from[axis]) * r->inv[axis];
 			tnear = t0 > tnear ? t0 : tnear;
 			tfar = t1 < tfar ? t1 : tfar;
 		}
@@ -329,12 +344,12 @@ static inline WIDE_AVX_TARGET int wide_hit_avx(const bvh_wide_node *n, const wid
 	 * value the compiler holds in a register took three). */
 	for (axis = 0; axis < 3; axis++) {
 		__m256 inv = _mm256_broadcast_ss(&r->inv[axis]);
-		__m256 t0 = _mm256_mul_ps(_mm256_sub_ps(_mm256_loadu_ps(wide_row(n, r->near_row[axis])),
-							_mm256_broadcast_ss(&r->near_from[axis])),
-					  inv);
-		__m256 t1 = _mm256_mul_ps(_mm256_sub_ps(_mm256_loadu_ps(wide_row(n, r->far_row[axis])),
-							_mm256_broadcast_ss(&r->far_from[axis])),
-					  inv);
+		__m256 lo = _mm256_loadu_ps(wide_row(n, r->near_row[axis]));
+		__m256 hi = _mm256_loadu_ps(wide_row(n, r->far_row[axis]));
+		__m256 from_near = _mm256_broadcast_ss(&r->near_from[axis]);
+		__m256 from_far = _mm256_broadcast_ss(&r->far_from[axis]);
+		__m256 t0 = _mm256_mul_ps(_mm256_sub_ps(lo, from_near), inv);
+		__m256 t1 = _mm256_mul_ps(_mm256_sub_ps(hi, from_far), inv);
 		tnear = _mm256_max_ps(t0, tnear);
 		tfar = _mm256_min_ps(t1, tfar);
 	}
@@ -379,14 +394,33 @@ static const unsigned char lowest_lane[256] = {
 RT_STATIC_ASSERT(lanes_fit_the_table, WIDE_LANES <= 8);
 #endif
 
+#if WIDE_SSE
+/* The SSE test's four-lane copies of the ray's numbers (wide_ray). */
+static inline void wide_ray_broadcast(wide_ray *w)
+{
+	int axis;
+	for (axis = 0; axis < 3; axis++) {
+		w->near_from4[axis] = _mm_set1_ps(w->near_from[axis]);
+		w->far_from4[axis] = _mm_set1_ps(w->far_from[axis]);
+		w->inv4[axis] = _mm_set1_ps(w->inv[axis]);
+	}
+}
+#endif
+
 #define TRAVERSE traverse
 #define TRAVERSE_TARGET
 #define WIDE_HIT wide_hit
+#if WIDE_SSE
+#define WIDE_PREPARE wide_ray_broadcast
+#else
+#define WIDE_PREPARE(w) ((void)(w))
+#endif
 #include "bvh_traverse.h"
 #if WIDE_AVX
 #define TRAVERSE traverse_avx
 #define TRAVERSE_TARGET WIDE_AVX_TARGET
 #define WIDE_HIT wide_hit_avx
+#define WIDE_PREPARE(w) ((void)(w))
 #include "bvh_traverse.h"
 #endif
 

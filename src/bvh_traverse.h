@@ -1,7 +1,8 @@
 /* bvh_traverse.h - the search of the hierarchy, front to back with a fixed stack,
  * shrinking the search as hits are found; shadow rays stop at the first opaque blocker.
  * Included by bvh.c once for each instruction set it searches the wide tree with:
- * TRAVERSE names the function, WIDE_HIT the wide node test it uses and TRAVERSE_TARGET
+ * TRAVERSE names the function, WIDE_HIT the wide node test it uses, WIDE_PREPARE what
+ * that test needs made once a ray (its wide_ray given) and TRAVERSE_TARGET
  * the instruction set it is compiled for (empty: the program's own).
  * See LICENSE for copyright and licence. */
 
@@ -94,6 +95,7 @@ static TRAVERSE_TARGET real TRAVERSE(const scene *s, const bvh_tree *t, const ra
 		} wide_stack[(WIDE_LANES - 1) * (BVH_MAX_DEPTH + 1) + 2];
 		float limit = wide_limit(tmax);
 		int current = -1; /* the wide node to search next; -1: take one from the stack */
+		WIDE_PREPARE(&wr);
 		wide_stack[0].child = 0; /* the root */
 		wide_stack[0].count = 0;
 		wide_stack[0].enter = 0.0f;
@@ -221,3 +223,4 @@ static TRAVERSE_TARGET real TRAVERSE(const scene *s, const bvh_tree *t, const ra
 #undef TRAVERSE
 #undef TRAVERSE_TARGET
 #undef WIDE_HIT
+#undef WIDE_PREPARE

@@ -102,8 +102,8 @@ void colour_encode_row(const vec3 *colors, int count, unsigned char *bytes)
 	for (i = 0; i < count; i++) {
 		/* A pixel of its left neighbour's colour (the background, flat areas) takes
 		 * its codes: equal values encode alike (0 and -0 too; NaN equals nothing). */
-		if (RT_COLOUR_REPEATS && i > 0 && colors[i].x == colors[i - 1].x && colors[i].y == colors[i - 1].y &&
-		    colors[i].z == colors[i - 1].z) {
+		if (RT_COLOUR_REPEATS && i > 0 && colors[i].x == colors[i - 1].x &&
+		    colors[i].y == colors[i - 1].y && colors[i].z == colors[i - 1].z) {
 			bytes[3 * i + 0] = bytes[3 * i - 3];
 			bytes[3 * i + 1] = bytes[3 * i - 2];
 			bytes[3 * i + 2] = bytes[3 * i - 1];

@@ -147,7 +147,7 @@ static int contains_ray(const vec3 *vertices, int count, const ray *r, const sce
 	ray_frame f = frame_of(r);
 	if (count < 1)
 		return 0;
-	/* A polygon of one run or less (a triangle) has none to pass over: one plain pass. */
+	/* A polygon of one run or less (a triangle, say) has none to pass over: one pass. */
 	if (count <= RT_POLYGON_RUN)
 		s = NULL;
 	return f.z == 0 ? crossings(vertices, count, &f, 0, s, first)

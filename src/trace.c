@@ -6,10 +6,10 @@
  * medium is attenuated by e^(-a d). Recursion stops at the depth limit and when a path's
  * weight can no longer change an 8-bit pixel. Nothing is traced that cannot contribute.
  *
- * Stack: trace_ray recurses at most `depth` <= RT_MAX_DEPTH levels. With double and gcc -O2
+ * Stack: trace_ray recurses at most `depth` <= RT_MAX_DEPTH levels. With double and gcc -O3
  * (-fstack-usage) one level is trace_ray's 848 bytes (shading and refraction inlined) plus
- * trace_mirror's 192, and the deepest leaf below it (scene_intersect + cone_intersect) 336:
- * 8 levels * 1040 + 336 = about 8.5 KiB worst case (the MCU's: docs/mcu.md).
+ * trace_mirror's 144, and the deepest leaf below it (scene_intersect + cone_intersect) 336:
+ * 8 levels * 992 + 336 = about 8.1 KiB worst case (the MCU's: docs/mcu.md).
  * See LICENSE for copyright and licence. */
 #include "trace.h"
 
