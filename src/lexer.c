@@ -170,21 +170,14 @@ int lexer_next(lexer *lx)
 		lx->tok[n++] = (char)c;
 #if RT_READ_BUFFER
 		/* The rest of the token, as far as the buffer holds it, without next_byte's
-		 * bookkeeping for each byte (teapot's 1.5 MB took 60 instructions a byte): no
-		 * token byte ends a line, so after one the state is what next_byte leaves after
-		 * any byte that is not a line end. c came through next_byte: nothing is pending. */
-		if (lx->read_block) {
-			int first = n;
+		 * bookkeeping for each byte (teapot's 1.5 MB took 60 instructions a byte). c
+		 * came through next_byte (nothing is pending) and ended no line, and no token
+		 * byte ends one: the line state next_byte left stands (cr_before, which may
+		 * differ, is read only by give_back, after the next next_byte sets it). */
+		if (lx->read_block)
 			while (lx->taken < lx->buffered && n < RT_TOKEN_MAX &&
 			       is_token_byte(lx->buffer[lx->taken]))
 				lx->tok[n++] = (char)lx->buffer[lx->taken++];
-			if (n > first) {
-				lx->last_line = lx->line;
-				lx->counted = 0;
-				lx->cr_before = 0;
-				lx->after_cr = 0;
-			}
-		}
 #endif
 		c = next_byte(lx);
 	}
