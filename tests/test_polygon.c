@@ -709,6 +709,61 @@ static void test_runs(void)
 	CHECK_INT(tally.disagree, 0);
 }
 
+/* A random coordinate for test_triangles: on a coarse grid (1/4 steps: products of such
+ * numbers tie exactly, and rays pass exactly through vertices and along edges) or
+ * anywhere in [-2, 2). */
+static real triangle_coordinate(int coarse)
+{
+	return test_real(coarse ? (int)test_random_range(-8.0, 8.0) / 4.0
+				: test_random_range(-2.0, 2.0));
+}
+
+/* A triangle's own path through the crossings test (polygon.c) answers as the general
+ * loop does: each triangle against itself with its last vertex repeated (an edge from a
+ * vertex to itself never straddles, so the loop's answer for it is the triangle's), on
+ * random triangles and on triangles of grid points (some with two equal vertices, some
+ * with three on a line), by rays from every side (every axis the largest of the
+ * direction) aimed at their vertices, their edges' middles and random points. */
+static void test_triangles(void)
+{
+	int i, k, inside = 0, disagree = 0;
+	test_seed(33);
+	for (i = 0; i < 60000; i++) {
+		int coarse = i % 2;
+		vec3 v[7], target, from;
+		ray r;
+		int pick = i / 2 % 3, three, four;
+		s.vertex_count = 0;
+		for (k = 0; k < 3; k++)
+			v[k] = vec_make(triangle_coordinate(coarse), triangle_coordinate(coarse),
+					triangle_coordinate(coarse));
+		if (coarse && i % 10 == 1)
+			v[2] = v[i % 20 == 1 ? 0 : 1]; /* two vertices the same */
+		if (pick == 0)
+			target = v[(int)test_random_range(0.0, 2.99)];
+		else if (pick == 1)
+			target = vec_scale(vec_add(v[i % 3], v[(i + 1) % 3]), REAL_C(0.5));
+		else
+			target = vec_make(triangle_coordinate(coarse), triangle_coordinate(coarse),
+					  triangle_coordinate(coarse));
+		from = vec_make(triangle_coordinate(coarse), triangle_coordinate(coarse),
+				triangle_coordinate(coarse));
+		from = vec_add(from, vec_scale(vec_sub(from, target), REAL_C(2.0)));
+		if (vec_dot(vec_sub(target, from), vec_sub(target, from)) <= REAL_C(0.0))
+			continue;
+		r = test_ray(from, vec_sub(target, from));
+		for (k = 0; k < 3; k++)
+			add_vertex(v[k]);
+		add_vertex(v[2]);
+		three = polygon_contains_ray(s.vertices, 3, &r);
+		four = polygon_contains_ray(s.vertices, 4, &r);
+		inside += three;
+		disagree += three != four;
+	}
+	CHECK(inside > 12000 && inside < 20000);
+	CHECK_INT(disagree, 0);
+}
+
 /* A point of big test polygon `shape` (i of n vertices), before it is tilted: a circle,
  * a star, a crescent (a thin C, whose centroid lies in its hollow, outside it), and a
  * circle whose vertices lie up to 0.02 off its plane. */
@@ -901,6 +956,7 @@ void suite_polygon(void)
 	test_patch();
 	test_collinear();
 	test_runs();
+	test_triangles();
 	test_discs();
 	test_disc_slit();
 }
