@@ -62,6 +62,9 @@ void trace_init(tracer *t, const accel *a, int depth, real cutoff)
 		    t->eye_media.count < RT_MAX_MEDIA)
 			t->eye_media.material[t->eye_media.count++] = o->material;
 	}
+#if EYE_COVER
+	eye_cover_init(&t->cover, a, t->eye_media.count > 0);
+#endif
 }
 
 /* How far rays leave a hit point. */
@@ -371,6 +374,9 @@ static vec3 trace_ray(tracer *t, const ray *r, int skip, int level, real weight,
 void trace_eye_line(tracer *t, dir3 n)
 {
 	origin_terms_plane(accel_scene(t->accel), n, &t->eye);
+#if EYE_COVER
+	eye_cover_line(&t->cover, n);
+#endif
 	/* Each line starts without remembered blockers, so that it renders alike whatever
 	 * lines a process traced before it (-j, --rows, -a's rows): a remembered blocker is
 	 * tested alone, and a test that reports a hit outside the object's box (Q16.16 on
@@ -386,7 +392,17 @@ void trace_eye_line(tracer *t, dir3 n)
 vec3 trace_eye(tracer *t, const ray *r, int *hit_object)
 {
 	int first;
-	vec3 color = trace_ray(t, r, -1, 1, REAL_C(1.0), &t->eye_media, &first);
+	vec3 color;
+#if EYE_COVER
+	/* What trace_ray gives a ray that meets nothing (the eye is in no medium here). */
+	if (eye_cover_misses(&t->cover, r)) {
+		t->stats.eye_rays++;
+		if (hit_object)
+			*hit_object = -1;
+		return accel_scene(t->accel)->background;
+	}
+#endif
+	color = trace_ray(t, r, -1, 1, REAL_C(1.0), &t->eye_media, &first);
 	t->stats.eye_rays++;
 	if (first >= 0)
 		t->stats.eye_hits++;

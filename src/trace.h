@@ -3,6 +3,7 @@
 #ifndef RT_TRACE_H
 #define RT_TRACE_H
 
+#include "eye_cover.h"
 #include "intersect.h"
 
 typedef struct {
@@ -28,6 +29,9 @@ typedef struct {
 	int last_blocker[RT_MAX_DEPTH][RT_MAX_LIGHTS];
 	origin_terms eye; /* the objects' terms for rays from the camera */
 	vec3 ambient[RT_MAX_MATERIALS]; /* each material's ambient light, made once */
+#if EYE_COVER
+	eye_cover cover; /* the eye rays that meet nothing, known without a search */
+#endif
 } tracer;
 
 /* Ready to trace the scene `a` searches (intersect.h). */

@@ -95,6 +95,7 @@ int main(int argc, char **argv)
 		{"cone", suite_cone},             {"optics", suite_optics}, {"properties", suite_properties},
 		{"parse", suite_parse},           {"image", suite_image},   {"output", suite_output}, {"deflate", suite_deflate},
 		{"fixed", suite_fixed},           {"camera", suite_camera}, {"bvh", suite_bvh},
+		{"eye_cover", suite_eye_cover},
 		{"clearance", suite_clearance},   {"pages", suite_pages},
 	};
 	size_t i;

@@ -178,6 +178,7 @@ void suite_output(void);
 void suite_deflate(void);
 void suite_camera(void);
 void suite_bvh(void);
+void suite_eye_cover(void);
 void suite_clearance(void);
 void suite_pages(void);
 void suite_fixed(void);
