@@ -87,12 +87,13 @@ static inline int real_from_text(const char *text, int shift, real *out)
 	char *end;
 	const char *c;
 	(void)shift;
-	/* NFF numbers are decimal: C's hexadecimal floats (0x1p3) are no number here, as
-	 * in fixed point, so every build reads a scene alike. */
-	for (c = text; *c; c++)
-		if (*c == 'x' || *c == 'X')
-			return REAL_TEXT_NOT_A_NUMBER;
 	if (!real_from_short_decimal(text, out)) {
+		/* NFF numbers are decimal: C's hexadecimal floats (0x1p3) are no number here,
+		 * as in fixed point, so every build reads a scene alike (a short decimal has
+		 * no x). */
+		for (c = text; *c; c++)
+			if (*c == 'x' || *c == 'X')
+				return REAL_TEXT_NOT_A_NUMBER;
 		*out = real_parse(text, &end);
 		if (end == text || *end != '\0')
 			return REAL_TEXT_NOT_A_NUMBER;
