@@ -14,8 +14,9 @@
  * misses by up to about 2^-19 of the distance (WIDE_SLACK; the binary tree's test, for
  * the few rays the wide one leaves to it, by far less), which moves the point seen by that
  * over the box's nearest depth, and the ray's own u is a few roundings off. A box not
- * wholly ahead of the eye by a margin may be seen anywhere. The rays of a line lie in its
- * plane to a few roundings, far within the reach allowed.
+ * wholly ahead of the eye by a margin may be seen anywhere. A ray that leans off its
+ * line's plane by more than EYE_COVER_PLANE_RAY (an up within a rounding of the view
+ * direction tilts the camera's right, and its lines' rays with it) is searched.
  * See LICENSE for copyright and licence. */
 #include "eye_cover.h"
 
@@ -25,7 +26,10 @@
 
 #define COVER_SLACK (REAL_C(1.0) / 131072) /* 2^-17: four times the wide test's 2^-19 */
 #define COVER_ROUNDING (REAL_C(1.0) / 65536) /* the ray's own (u, v), many times over */
-#define COVER_PLANE (REAL_C(1.0) / 1024)     /* a line's plane and its rays, many times over */
+/* A box counts for a line when it lies within COVER_PLANE of the distance from its
+ * plane: twice the lean a ray may have (EYE_COVER_PLANE_RAY, checked for each ray), and
+ * the box's own roundings. */
+#define COVER_PLANE (REAL_C(1.0) / 1024)
 
 /* A lane of a wide node. */
 typedef struct {
@@ -165,6 +169,7 @@ void eye_cover_line(eye_cover *c, dir3 n)
 	int i, j, count = 0;
 	c->line_count = 0;
 	c->line_whole = 1;
+	c->line_normal = normal;
 	if (!c->enabled)
 		return;
 	for (i = 0; i < c->box_count; i++) {

@@ -1,7 +1,8 @@
 /* test_eye_cover.c - the eye rays the cover leaves unsearched meet nothing: for scenes of
- * spheres and triangles seen from far, near, inside and at the edge of the view, at
- * every scale a scene may have, every ray of many image lines (and antialiasing's points
- * between them) that eye_cover_misses passes over finds no hit through the full search.
+ * spheres and triangles seen from far, near, inside and at the edge of the view, with up
+ * almost the view direction, at every scale a scene may have, every ray of many image
+ * lines (and antialiasing's points between them) that eye_cover_misses passes over finds
+ * no hit through the full search.
  * See LICENSE for copyright and licence. */
 #include <math.h>
 #include <stdio.h>
@@ -20,19 +21,32 @@ static char text[1 << 16];
 
 /* Writes a scene of 60 spheres and 40 triangles in a cube of side `size` about
  * (offset, offset, offset), seen from `from` towards `at` (both in the cube's units:
- * scaled and offset alike) with the view angle `angle`. */
+ * scaled and offset alike) with the view angle `angle`, up +z; or with `tilt` > 0, up
+ * the view direction tilted towards +z by `tilt` roundings of the type, or as little as
+ * the parser takes (the camera's right is then only roughly square to its view). */
 static void write_scene(double size, double offset, const double from[3], const double at[3],
-			double angle)
+			double angle, double tilt)
 {
+	double up[3] = {0.0, 0.0, 1.0};
 	size_t n = 0;
 	int i, k;
 	test_seed(77);
+	if (tilt > 0.0) {
+		double length = 0.0;
+		for (k = 0; k < 3; k++) {
+			up[k] = at[k] - from[k];
+			length += up[k] * up[k];
+		}
+		/* Not below 4e-9: the parser refuses an up within 1e-9 of the view direction. */
+		up[2] += (tilt * (double)REAL_EPSILON > 4e-9 ? tilt * (double)REAL_EPSILON : 4e-9) *
+			 sqrt(length);
+	}
 	n += (size_t)snprintf(text + n, sizeof text - n,
-			      "v\nfrom %.17g %.17g %.17g\nat %.17g %.17g %.17g\nup 0 0 1\n"
+			      "v\nfrom %.17g %.17g %.17g\nat %.17g %.17g %.17g\nup %.17g %.17g %.17g\n"
 			      "angle %g\nhither 0.001\nresolution 8 8\nl 0 0 100\nf 1 1 1 1 0 0 0 1\n",
 			      offset + size * from[0], offset + size * from[1], offset + size * from[2],
-			      offset + size * at[0], offset + size * at[1], offset + size * at[2],
-			      angle);
+			      offset + size * at[0], offset + size * at[1], offset + size * at[2], up[0],
+			      up[1], up[2], angle);
 	for (i = 0; i < 60; i++)
 		n += (size_t)snprintf(text + n, sizeof text - n, "s %.17g %.17g %.17g %.17g\n",
 				      offset + size * test_random_range(-1.0, 1.0),
@@ -106,21 +120,24 @@ static void check_view(tally *y, const char *name)
 static void test_views(void)
 {
 	static const double scales[][2] = {{1.0, 0.0}, {1e-4, 0.0}, {1e3, 0.0}, {1.0, 1e5}, {0.01, 30.0}};
-	static const double views[][7] = {
-		/* from, at, angle */
-		{6, -9, 4, 0, 0, 0, 20},     /* far: most of the image misses */
-		{3, -4, 2, 0, 0, 0, 60},     /* near */
-		{0.1, 0.2, 0.05, 1, 0, 0, 90}, /* inside the cluster */
-		{4, 0, 0, 0, 3, 0, 40},      /* the cluster at the edge of the view */
-		{1.3, -1.3, 0.2, 0, 0, 0, 170}, /* just outside, very wide */
-		{200, -300, 100, 0, 0, 0, 0.5}, /* very far, very narrow */
+	static const double views[][8] = {
+		/* from, at, angle, up's tilt */
+		{6, -9, 4, 0, 0, 0, 20, 0},     /* far: most of the image misses */
+		{3, -4, 2, 0, 0, 0, 60, 0},     /* near */
+		{0.1, 0.2, 0.05, 1, 0, 0, 90, 0}, /* inside the cluster */
+		{4, 0, 0, 0, 3, 0, 40, 0},      /* the cluster at the edge of the view */
+		{1.3, -1.3, 0.2, 0, 0, 0, 170, 0}, /* just outside, very wide */
+		{200, -300, 100, 0, 0, 0, 0.5, 0}, /* very far, very narrow */
+		{6, -9, 4, 0, 0, 0, 40, 0.5},     /* far, up almost the view direction */
+		{3, -4, 2, 0, 0, 0, 90, 1},   /* near, the same */
 	};
 	tally far = {0, 0, 0, 0}, all = {0, 0, 0, 0};
 	size_t i, j;
 	for (i = 0; i < sizeof scales / sizeof scales[0]; i++)
 		for (j = 0; j < sizeof views / sizeof views[0]; j++) {
 			tally y = {0, 0, 0, 0};
-			write_scene(scales[i][0], scales[i][1], views[j], views[j] + 3, views[j][6]);
+			write_scene(scales[i][0], scales[i][1], views[j], views[j] + 3, views[j][6],
+				    views[j][7]);
 			check_view(&y, "cover.nff");
 			if (j == 0 && i == 0)
 				far = y;
