@@ -3,6 +3,10 @@
  * See LICENSE for copyright and licence. */
 #include "camera.h"
 
+/* How far from square (the cosine) a camera's right may be to its forward: the tracer's
+ * image-line planes hold the line's rays to about this (numerics of camera_line_at). */
+#define CAMERA_LEAN UNIT_C(9.5367431640625e-07) /* 2^-20 */
+
 #if REAL_FIXED
 /* axis half_width / width, the step of half a pixel along a camera axis, rounded to
  * 2^-32, in Q32.32, from half_width = sin / cos of half the angle (Q4.28): Q2.30 times
@@ -54,6 +58,19 @@ const char *camera_init(camera *c, const view *v, int width, int height)
 	if (!(unit_sqrt(dir_dot(right, right)) > UNIT_C(1e-9)))
 		return degenerate;
 	c->right = dir_renormalize(right);
+#if !REAL_FIXED
+	{
+		/* An up within a few roundings of the view direction leaves right only roughly
+		 * square to forward (their cross product is then mostly rounding), and each
+		 * image line's rays off the plane camera_line_at gives for it, by which the
+		 * tracer leaves objects out: squared here. A right square to a few roundings
+		 * already (every other view) is kept bit for bit. */
+		unit lean = dir_dot(c->right, c->forward);
+		if (unit_fabs(lean) > CAMERA_LEAN)
+			c->right = dir_normalize(
+				vec_sub(dir_to_vec(c->right), dir_scale(c->forward, unit_to_real(lean))));
+	}
+#endif
 	c->up = dir_cross(c->right, c->forward);
 	c->eye = v->from;
 	c->width = width;

@@ -38,7 +38,8 @@ const char *camera_init(camera *c, const view *v, int width, int height);
 typedef struct {
 	const camera *c;
 	int x2;      /* the next ray's x, in half pixels */
-	dir3 normal; /* of the plane through the eye that holds all of the line's rays */
+	dir3 normal; /* of the plane through the eye that holds all of the line's rays (to about
+		      * 2^-20 of their length: camera_init squares right to forward) */
 #if REAL_FIXED
 	/* forward + v up + u right for the next ray, and u right's step per pixel, in Q32.32:
 	 * a row of directions by additions, exact in integers (no per-pixel products). */

@@ -14,9 +14,9 @@
  * misses by up to about 2^-19 of the distance (WIDE_SLACK; the binary tree's test, for
  * the few rays the wide one leaves to it, by far less), which moves the point seen by that
  * over the box's nearest depth, and the ray's own u is a few roundings off. A box not
- * wholly ahead of the eye by a margin may be seen anywhere. A ray that leans off its
- * line's plane by more than EYE_COVER_PLANE_RAY (an up within a rounding of the view
- * direction tilts the camera's right, and its lines' rays with it) is searched.
+ * wholly ahead of the eye by a margin may be seen anywhere. The rays of a line lie in
+ * its plane to about 2^-20 (the camera squares its right to its view: an up within a
+ * rounding of the view direction would tilt them off it), far within the reach allowed.
  * See LICENSE for copyright and licence. */
 #include "eye_cover.h"
 
@@ -27,8 +27,7 @@
 #define COVER_SLACK (REAL_C(1.0) / 131072) /* 2^-17: four times the wide test's 2^-19 */
 #define COVER_ROUNDING (REAL_C(1.0) / 65536) /* the ray's own (u, v), many times over */
 /* A box counts for a line when it lies within COVER_PLANE of the distance from its
- * plane: twice the lean a ray may have (EYE_COVER_PLANE_RAY, checked for each ray), and
- * the box's own roundings. */
+ * plane: the camera's lines hold their rays to about 2^-20 (camera.c, CAMERA_LEAN). */
 #define COVER_PLANE (REAL_C(1.0) / 1024)
 
 /* A lane of a wide node. */
@@ -169,7 +168,6 @@ void eye_cover_line(eye_cover *c, dir3 n)
 	int i, j, count = 0;
 	c->line_count = 0;
 	c->line_whole = 1;
-	c->line_normal = normal;
 	if (!c->enabled)
 		return;
 	for (i = 0; i < c->box_count; i++) {

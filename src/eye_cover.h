@@ -13,7 +13,6 @@
 
 #if EYE_COVER
 #define EYE_COVER_BOXES 64 /* the top boxes: as many as the tree's first levels give */
-#define EYE_COVER_PLANE_RAY (REAL_C(1.0) / 2048) /* how far a ray may lean off its line's plane */
 
 typedef struct {
 	int enabled;
@@ -26,7 +25,6 @@ typedef struct {
 	vec3 centre[EYE_COVER_BOXES], half[EYE_COVER_BOXES];
 	real span_lo[EYE_COVER_BOXES], span_hi[EYE_COVER_BOXES];
 	real plane_reach; /* how far off a line's plane a box may lie and still count */
-	vec3 line_normal; /* the current line's plane (0: none) */
 	/* The spans of the boxes the current image line's plane passes through or near,
 	 * joined where they overlap, in order. */
 	int line_count, line_whole; /* line_whole: search every ray of the line */
@@ -55,11 +53,6 @@ static inline int eye_cover_misses(const eye_cover *c, const ray *r)
 	along = vec_dot(d, c->forward);
 	if (!(along > REAL_C(0.0)))
 		return 0; /* NaN too */
-	/* The line's spans hold for rays within 2^-11 of its plane (eye_cover.c); the
-	 * camera's rays are far nearer, unless its right is not square to its forward (an
-	 * up within a rounding of the view direction). */
-	if (!(real_fabs(vec_dot(d, c->line_normal)) <= EYE_COVER_PLANE_RAY))
-		return 0;
 	u = vec_dot(d, c->across) / along;
 	/* The last span that starts at or before u: does it reach u? */
 	high = c->line_count;

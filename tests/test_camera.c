@@ -186,6 +186,52 @@ static void test_line_culling(void)
 	CHECK(culled > far * 3 / 4);
 }
 
+/* An up within a rounding or two of the view direction (which the parser takes down to
+ * 1e-9) leaves the cross product of the two mostly rounding: the camera squares right to
+ * forward, so that each line's rays still lie in its plane (the tracer's culling by
+ * lines relies on it), at every angle. Floating point; Q16.16's parser refuses such ups
+ * and its camera has its own arithmetic. */
+static void test_square_lines(void)
+{
+#if !REAL_FIXED
+	static const double tilts[] = {0.5, 1.0, 3.0, 0.0};
+	static const double angles[] = {20.0, 60.0, 120.0, 179.0};
+	double worst = 0.0;
+	size_t i, j;
+	for (i = 0; i < sizeof tilts / sizeof tilts[0]; i++)
+		for (j = 0; j < sizeof angles / sizeof angles[0]; j++) {
+			view v;
+			camera c;
+			int y2, x;
+			double dir[3] = {7.0, -3.0, 5.0};
+			double tilt = tilts[i] * (double)REAL_EPSILON;
+			v.from = vec_make(REAL_C(1.0), REAL_C(2.0), REAL_C(3.0));
+			v.at = vec_add(v.from, vec_make((real)dir[0], (real)dir[1], (real)dir[2]));
+			/* Up: the view direction, its last component moved by the tilt (at least
+			 * what the parser takes). */
+			v.up = vec_make((real)dir[0], (real)dir[1],
+					(real)(dir[2] * (1.0 + (tilt > 2e-8 ? tilt : 2e-8))));
+			if (tilts[i] == 0.0)
+				v.up = vec_make(REAL_C(0.0), REAL_C(0.0), REAL_C(1.0));
+			v.angle = (real)angles[j];
+			if (!CHECK(camera_init(&c, &v, 40, 30) == NULL))
+				continue;
+			CHECK(fabs(test_double(unit_to_real(dir_dot(c.right, c.forward)))) <= 1.0 / 1048576);
+			for (y2 = 0; y2 <= 60; y2 += 5) {
+				camera_line line = camera_line_at(&c, y2, 0);
+				for (x = 0; x <= 40; x++) {
+					ray r;
+					double lean;
+					camera_next_ray(&line, &r);
+					lean = fabs(test_double(unit_to_real(dir_dot(r.dir, line.normal))));
+					worst = lean > worst ? lean : worst;
+				}
+			}
+		}
+	CHECK(worst <= 1.0 / 524288); /* 2^-19 */
+#endif
+}
+
 /* A view so wide that the image plane reaches past 4096 at its corners: refused in fixed
  * point, which could not square such directions in 64 bits, and taken in floating point;
  * at 179.9 degrees an image 1 wide is taken up to 3 high, not 4. */
@@ -268,6 +314,7 @@ void suite_camera(void)
 	test_eye_rays();
 	test_rays_at();
 	test_line_culling();
+	test_square_lines();
 	test_too_wide();
 	test_too_narrow();
 }
