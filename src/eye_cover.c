@@ -11,7 +11,7 @@
  * boxes near its line's plane meets nothing.
  *
  * The spans are widened for the roundings: the wide tree's test lets a ray pass a box it
- * misses by up to about 2^-19 of the distance (WIDE_SLACK; the binary tree's test, for
+ * misses by up to about 2^-20 of the distance (WIDE_SLACK; the binary tree's test, for
  * the few rays the wide one leaves to it, by far less), which moves the point seen by that
  * over the box's nearest depth, and the ray's own u is a few roundings off. A box not
  * wholly ahead of the eye by a margin may be seen anywhere. The rays of a line lie in
@@ -24,7 +24,7 @@
 #include <float.h>
 #include <string.h>
 
-#define COVER_SLACK (REAL_C(1.0) / 131072) /* 2^-17: four times the wide test's 2^-19 */
+#define COVER_SLACK (REAL_C(1.0) / 131072) /* 2^-17: eight times the wide test's 2^-20 */
 #define COVER_ROUNDING (REAL_C(1.0) / 65536) /* the ray's own (u, v), many times over */
 /* A box counts for a line when it lies within COVER_PLANE of the distance from its
  * plane: the camera's lines hold their rays to about 2^-20 (camera.c, CAMERA_LEAN). */
