@@ -3,9 +3,11 @@
  * See LICENSE for copyright and licence. */
 #include "camera.h"
 
+#if !REAL_FIXED
 /* How far from square (the cosine) a camera's right may be to its forward: the tracer's
- * image-line planes hold the line's rays to about this (numerics of camera_line_at). */
+ * image-line planes hold the line's rays to about this (camera_line_at). */
 #define CAMERA_LEAN UNIT_C(9.5367431640625e-07) /* 2^-20 */
+#endif
 
 #if REAL_FIXED
 /* axis half_width / width, the step of half a pixel along a camera axis, rounded to

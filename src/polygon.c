@@ -94,8 +94,9 @@ static int run_passes(vec3 lo, vec3 hi, const ray_frame *f, int z)
 #endif
 
 /* The crossings test for one choice of z, so that the compiler makes a copy for each
- * with the axes fixed. With s (the vertices being s's pool from `first`), runs of RT_POLYGON_RUN edges whose box lies on one side of v = 0 are passed
- * over at once: a 144-gon's (SPD gears) test costs a third as much. */
+ * with the axes fixed. With s (the vertices being s's pool from `first`), runs of
+ * RT_POLYGON_RUN edges whose box lies on one side of v = 0 are passed over at once: a
+ * 144-gon's (SPD gears) test costs a third as much. */
 static inline int crossings(const vec3 *vertices, int count, const ray_frame *f, int z,
 			    const scene *s, int first)
 {
