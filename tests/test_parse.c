@@ -55,11 +55,71 @@ static void capture(void *ctx, const char *message)
 /* Several MB: static, never on the stack. */
 static scene sc;
 
-/* Parses `length` bytes (NULs included) with messages captured, not printed. */
+#if RT_READ_BUFFER
+/* The block reader's view of a source: at most `chunk` bytes a call, so that blocks end
+ * anywhere, inside tokens, spaces and line ends alike. */
+typedef struct {
+	source src;
+	long chunk;
+} chunked_source;
+
+static long read_chunks(void *ctx, unsigned char *to, long max)
+{
+	chunked_source *c = ctx;
+	long n = 0;
+	while (n < max && n < c->chunk && c->src.next < c->src.length)
+		to[n++] = (unsigned char)c->src.text[c->src.next++];
+	return n;
+}
+
+/* What a parse gave, for comparing the two readers. */
+typedef struct {
+	int ok, message_count, object_count, light_count, lines[8];
+	char messages[sizeof messages];
+} parse_outcome;
+
+static void outcome_of(int ok, parse_outcome *o)
+{
+	int i;
+	o->ok = ok;
+	o->message_count = message_count;
+	memset(o->messages, 0, sizeof o->messages);
+	memcpy(o->messages, messages, strlen(messages));
+	o->object_count = ok ? sc.object_count : 0;
+	o->light_count = ok ? sc.light_count : 0;
+	for (i = 0; i < 8; i++)
+		o->lines[i] = ok && i < sc.object_count ? sc.objects[i].line : 0;
+}
+#endif
+
+/* Parses `length` bytes (NULs included) with messages captured, not printed. Files are
+ * read a block at a time (load.c), and the lexer takes most tokens straight from the
+ * block: every case is read that way too, in blocks of 1, 2, 5 and 4096 bytes, and must
+ * give the same result, messages and objects' lines as byte by byte. */
 static int parse_bytes(const char *text, size_t length)
 {
 	source src;
 	int ok;
+#if RT_READ_BUFFER
+	static const long chunks[] = {1, 2, 5, RT_READ_BUFFER};
+	static parse_outcome by_blocks, by_bytes;
+	int c;
+	for (c = 0; c < (int)(sizeof chunks / sizeof chunks[0]); c++) {
+		chunked_source blocks;
+		blocks.src.text = text;
+		blocks.src.length = length;
+		blocks.src.next = 0;
+		blocks.chunk = chunks[c];
+		messages[0] = '\0';
+		message_count = 0;
+		diag_set_sink(capture, NULL);
+		ok = parse_scene_blocks(&sc, FILE_NAME, read_chunks, &blocks, 0);
+		diag_set_sink(NULL, NULL);
+		outcome_of(ok, c == 0 ? &by_blocks : &by_bytes);
+		if (c > 0)
+			CHECK(memcmp(&by_blocks, &by_bytes, sizeof by_blocks) == 0);
+	}
+#endif
 	src.text = text;
 	src.length = length;
 	src.next = 0;
@@ -68,6 +128,12 @@ static int parse_bytes(const char *text, size_t length)
 	diag_set_sink(capture, NULL);
 	ok = parse_scene(&sc, FILE_NAME, read_source, &src);
 	diag_set_sink(NULL, NULL);
+#if RT_READ_BUFFER
+	outcome_of(ok, &by_bytes);
+	if (!CHECK(memcmp(&by_blocks, &by_bytes, sizeof by_blocks) == 0))
+		printf("    read by blocks: %d, %s    byte by byte: %d, %s", by_blocks.ok,
+		       by_blocks.messages, by_bytes.ok, by_bytes.messages);
+#endif
 	return ok;
 }
 
