@@ -149,6 +149,10 @@ RT_APART real plane_gap(dir3 normal, real offset, const vec3 *origin);
  * test in the ray's frame (polygon.c): the same answer for an edge or vertex in every
  * polygon that shares it, so exactly one of a tiling's polygons is met. */
 int polygon_contains_ray(const vec3 *vertices, int count, const ray *r);
+/* The same, with the runs of s's vertex pool from `first` (the polygon's own) passed over
+ * where none of their edges can count (RT_POLYGON_RUNS: a 144-gon's test a third as long). */
+int polygon_outline_crossed(const vec3 *vertices, int count, const ray *r, const scene *s,
+			    int first);
 
 /* The 2D coordinates of p in the projection that drops `axis` (u = axis+1, v = axis+2,
  * mod 3), where a patch's shading normal is blended. */
