@@ -98,9 +98,6 @@ void sphere_measure(const sphere_shape *s, real *extent, real *feature);
 int polygon_bounds(const scene *s, const polygon_shape *poly, vec3 *lo, vec3 *hi);
 real polygon_clearance(const scene *s, const polygon_shape *g, const vec3 *p);
 int cone_bounds(const cone_shape *c, vec3 *lo, vec3 *hi);
-/* The bounds of piece `piece` of `pieces` equal lengths of the cone's side (bvh_build.c
- * gives a long cone several boxes); one piece is cone_bounds. */
-int cone_piece_bounds(const cone_shape *c, int piece, int pieces, vec3 *lo, vec3 *hi);
 real cone_clearance(const cone_shape *g, const vec3 *p);
 void cone_measure(const cone_shape *c, real *extent, real *feature);
 int hedron_bounds(const scene *s, const hedron_shape *g, vec3 *lo, vec3 *hi);
