@@ -90,11 +90,16 @@ static real sum_abs(vec3 a)
 	return real_fabs(a.x) + real_fabs(a.y) + real_fabs(a.z);
 }
 
+/* How far a . x ranges either side of a . centre over the box centre +- half. */
+static real box_extent(vec3 a, vec3 half)
+{
+	return real_fabs(a.x) * half.x + real_fabs(a.y) * half.y + real_fabs(a.z) * half.z;
+}
+
 /* The least of a . x over the box centre +- half. */
 static real box_least(vec3 a, vec3 centre, vec3 half)
 {
-	return vec_dot(a, centre) - (real_fabs(a.x) * half.x + real_fabs(a.y) * half.y +
-				     real_fabs(a.z) * half.z);
+	return vec_dot(a, centre) - box_extent(a, half);
 }
 
 void eye_cover_init(eye_cover *c, const accel *a, int eye_in_medium)
@@ -163,7 +168,7 @@ void eye_cover_init(eye_cover *c, const accel *a, int eye_in_medium)
 
 void eye_cover_line(eye_cover *c, dir3 n)
 {
-	vec3 normal = dir_to_vec(n), opposite = vec_scale(normal, REAL_C(-1.0));
+	vec3 normal = dir_to_vec(n);
 	real covered;
 	int i, j, count = 0;
 	c->line_count = 0;
@@ -173,9 +178,11 @@ void eye_cover_line(eye_cover *c, dir3 n)
 	for (i = 0; i < c->box_count; i++) {
 		real lo = c->span_lo[i], hi = c->span_hi[i];
 		/* A box wholly on one side of the plane (by more than the reach) holds none
-		 * of the line's hits. */
-		if (box_least(normal, c->centre[i], c->half[i]) > c->plane_reach ||
-		    box_least(opposite, c->centre[i], c->half[i]) > c->plane_reach)
+		 * of the line's hits: its centre farther from the plane than its extent
+		 * across it and the reach (the same numbers on either side: a negation
+		 * rounds as the value it negates). */
+		if (real_fabs(vec_dot(normal, c->centre[i])) - box_extent(normal, c->half[i]) >
+		    c->plane_reach)
 			continue;
 		/* Into the ordered spans, joining those it overlaps. */
 		for (j = count; j > 0 && c->line_lo[j - 1] > lo; j--) {
