@@ -43,6 +43,20 @@ static int next_buffered(lexer *lx)
 }
 #endif
 
+/* The line state after byte c (-1: the end) is read: its line, and whether it ends one.
+ * A line ends at LF, at CR LF and at a lone CR (old Mac files): a CR counts the line, an
+ * LF right after it does not. Saturates: a hostile file of 2^31 newlines must not
+ * overflow the counter. */
+RT_INLINE void count_byte(lexer *lx, int c)
+{
+	if (c >= 0)
+		lx->last_line = lx->line;
+	lx->counted = (c == '\r' || (c == '\n' && !lx->after_cr)) && lx->line < INT_MAX;
+	lx->line += lx->counted;
+	lx->cr_before = lx->after_cr;
+	lx->after_cr = c == '\r';
+}
+
 static int next_byte(lexer *lx)
 {
 	int c;
@@ -56,15 +70,7 @@ static int next_byte(lexer *lx)
 		c = lx->read(lx->ctx);
 #endif
 	}
-	if (c >= 0)
-		lx->last_line = lx->line;
-	/* A line ends at LF, at CR LF and at a lone CR (old Mac files): a CR counts the line,
-	 * an LF right after it does not. Saturates: a hostile file of 2^31 newlines must not
-	 * overflow the counter. */
-	lx->counted = (c == '\r' || (c == '\n' && !lx->after_cr)) && lx->line < INT_MAX;
-	lx->line += lx->counted;
-	lx->cr_before = lx->after_cr;
-	lx->after_cr = c == '\r';
+	count_byte(lx, c);
 	return c;
 }
 
@@ -152,11 +158,7 @@ static int next_buffered_token(lexer *lx)
 		int c = lx->buffer[at];
 		if (c != ' ' && c != '\t' && c != '\n')
 			break;
-		lx->last_line = lx->line;
-		lx->counted = c == '\n' && !lx->after_cr && lx->line < INT_MAX;
-		lx->line += lx->counted;
-		lx->cr_before = lx->after_cr;
-		lx->after_cr = 0;
+		count_byte(lx, c);
 	}
 	lx->taken = at;
 	/* The token's end, within RT_TOKEN_MAX bytes (a longer one is the other path's error). */
@@ -175,13 +177,10 @@ static int next_buffered_token(lexer *lx)
 			return 0;
 	}
 	/* The token's first byte as next_byte takes it (no token byte ends a line). */
+	count_byte(lx, lx->buffer[lx->taken]);
 	memcpy(lx->tok, lx->buffer + lx->taken, (size_t)n);
 	lx->tok[n] = '\0';
 	lx->tok_line = lx->line;
-	lx->last_line = lx->line;
-	lx->counted = 0;
-	lx->cr_before = lx->after_cr;
-	lx->after_cr = 0;
 	lx->taken = at;
 	return 1;
 }
