@@ -7,6 +7,7 @@
 #include "intersect.h"
 
 #include <stddef.h>
+#include <string.h>
 
 /* SSE (every x86-64, and x86 built for it) tests a wide node's boxes four at a time;
  * other targets take the plain C loop, with the same results. RT_NO_SIMD=1 forces it.
@@ -372,7 +373,8 @@ static int avx_present(void)
 		return present;
 	present = 0;
 	if (__get_cpuid(1, &a, &b, &c, &d) && (c & bit_AVX) && (c & bit_OSXSAVE)) {
-		__asm__("xgetbv" : "=a"(xcr0_low), "=d"(xcr0_high) : "c"(0));
+		/* Volatile: not moved out of the branch that the cached answer skips. */
+		__asm__ __volatile__("xgetbv" : "=a"(xcr0_low), "=d"(xcr0_high) : "c"(0));
 		present = (xcr0_low & 6) == 6;
 	}
 	return present;
@@ -406,6 +408,74 @@ static inline void wide_ray_broadcast(wide_ray *w)
 	}
 }
 #endif
+
+/* The transmitting objects a shadow search crosses, as it meets them: the first
+ * BVH_CROSSED here; a ray that crosses more (through a stack of glass panes, say) has them
+ * all in crossed_beyond, which one search at a time uses (a process traces one ray at a
+ * time). Each object is met once in a search: the index lists it once. */
+typedef struct {
+	int count;
+	int index[BVH_CROSSED];
+} crossing;
+
+static int crossed_beyond[RT_MAX_OBJECTS], crossed_spare[RT_MAX_OBJECTS];
+
+static void crossing_add(crossing *c, int o)
+{
+	if (c->count == BVH_CROSSED)
+		memcpy(crossed_beyond, c->index, sizeof c->index);
+	if (c->count < BVH_CROSSED)
+		c->index[c->count] = o;
+	else
+		crossed_beyond[c->count] = o;
+	c->count++;
+}
+
+/* Sorts a[0 .. n) (object indices, below 2^31) by least significant digit first, 8 bits
+ * a pass, through `spare` (as long): linear in n, for a ray through thousands of panes.
+ * Returns where the sorted list is (a or spare). */
+static int *radix_sort(int *a, int *spare, int n)
+{
+	int most = 0, shift, i;
+	for (i = 0; i < n; i++)
+		most = a[i] > most ? a[i] : most;
+	for (shift = 0; shift < 31 && most >> shift; shift += 8) {
+		int start[257] = {0}, *swap;
+		for (i = 0; i < n; i++)
+			start[(a[i] >> shift & 255) + 1]++;
+		for (i = 0; i < 256; i++)
+			start[i + 1] += start[i];
+		for (i = 0; i < n; i++)
+			spare[start[a[i] >> shift & 255]++] = a[i];
+		swap = a;
+		a = spare;
+		spare = swap;
+	}
+	return a;
+}
+
+/* The product of the kt of the transmitting objects a shadow search crossed, in the
+ * objects' order, as the object-by-object search takes it: a product of three or more
+ * rounds by its order, which the tree's would not keep. A few are sorted in place, more
+ * by radix sort. */
+static real transmittance_in_order(const scene *s, crossing *c)
+{
+	int *list = c->index, n = c->count, i;
+	real pass = REAL_C(1.0);
+	if (n > BVH_CROSSED) {
+		list = radix_sort(crossed_beyond, crossed_spare, n);
+	} else {
+		for (i = 1; i < n; i++) {
+			int o = list[i], j;
+			for (j = i; j > 0 && list[j - 1] > o; j--)
+				list[j] = list[j - 1];
+			list[j] = o;
+		}
+	}
+	for (i = 0; i < n; i++)
+		pass = real_mul(pass, s->materials[s->objects[list[i]].material].kt);
+	return pass;
+}
 
 #define TRAVERSE traverse
 #define TRAVERSE_TARGET

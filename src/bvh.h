@@ -122,8 +122,11 @@ void bvh_build(bvh_tree *t, const scene *s);
 int bvh_nearest(const scene *s, const bvh_tree *t, const ray *r, int skip, real tmax, hit *h);
 
 /* Light passing along r over (0, tmax), leaving out `skip`: 0 at an opaque blocker, else
- * the product of the kt of the transmitting objects crossed; *blocker gets the opaque
- * blocker, or -1. */
+ * the product of the kt of the transmitting objects crossed, taken in the objects' order
+ * as the object-by-object search takes it (a product of three or more rounds by its
+ * order); *blocker gets the opaque blocker, or -1. A search notes up to BVH_CROSSED of
+ * them in its own frame, more in a buffer of the scene's capacity. */
+#define BVH_CROSSED 16
 real bvh_transmittance(const scene *s, const bvh_tree *t, const ray *r, int skip, real tmax,
 		       int *blocker);
 #endif

@@ -9,7 +9,8 @@
 /* The two queries share one traversal (`shadow` says which). Nearest: the closest hit,
  * shrinking tmax as hits are found, children visited nearest first. Shadow: the product
  * of the kt of every transmitting object crossed, stopping at the first opaque one
- * (*found gets it, or -1). */
+ * (*found gets it, or -1), taken again in the objects' order where that matters (three
+ * or more: transmittance_in_order). */
 static TRAVERSE_TARGET real TRAVERSE(const scene *s, const bvh_tree *t, const ray *r,
 				     int skip, real tmax, hit *h, int shadow, int *found)
 {
@@ -19,12 +20,14 @@ static TRAVERSE_TARGET real TRAVERSE(const scene *s, const bvh_tree *t, const ra
 	} stack[STACK_SIZE];
 	int top = 0, i;
 	real pass = REAL_C(1.0), enter, enter0, enter1;
+	crossing crossed; /* the transmitting objects a shadow ray crosses */
 	slab_ray sr;
 #if BVH_WIDE
 	wide_ray wr;
 #endif
 
 	*found = shadow ? -1 : 0;
+	crossed.count = 0;
 	/* Visits object `o` for a shadow ray: returns at an opaque blocker. */
 #define VISIT_SHADOW(o)                                                                       \
 	do {                                                                                  \
@@ -36,8 +39,13 @@ static TRAVERSE_TARGET real TRAVERSE(const scene *s, const bvh_tree *t, const ra
 				return REAL_C(0.0);                                           \
 			}                                                                     \
 			pass = real_mul(pass, kt_);                                           \
+			crossing_add(&crossed, visit_);                                       \
 		}                                                                             \
 	} while (0)
+	/* A search's answer: a shadow ray's product, in the objects' order where three or
+	 * more were crossed (one or two kt give the same product in any order). */
+#define SHADOW_PASS()                                                                         \
+	(shadow && crossed.count > 2 ? transmittance_in_order(s, &crossed) : pass)
 	/* Visits object `o` for a nearest-hit query: shrinks tmax to a nearer hit. */
 #define VISIT_NEAREST(o)                                                                      \
 	do {                                                                                  \
@@ -168,7 +176,7 @@ static TRAVERSE_TARGET real TRAVERSE(const scene *s, const bvh_tree *t, const ra
 			else
 				VISIT_LEAF(node->child[near], node->count[near]);
 		}
-		return pass;
+		return SHADOW_PASS();
 	}
 #endif
 	sr.origin = r->origin;
@@ -217,7 +225,8 @@ static TRAVERSE_TARGET real TRAVERSE(const scene *s, const bvh_tree *t, const ra
 #undef VISIT_LEAF
 #undef VISIT_NEAREST
 #undef VISIT_SHADOW
-	return pass;
+	return SHADOW_PASS();
+#undef SHADOW_PASS
 }
 
 #undef TRAVERSE

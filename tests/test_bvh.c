@@ -484,6 +484,73 @@ static void test_tree_shape(void)
 		CHECK(leaves * 4 >= cases[c].count && leaves <= cases[c].count);
 	}
 }
+
+/* A cloud of transmitting spheres (four kt that no type holds exactly, a few opaque
+ * among them) and shadow rays through it: through the hierarchy the light that passes
+ * is the same number as object by object, bit for bit, in every type. The product of
+ * three kt or more rounds by the order it is taken in, and the tree meets the spheres
+ * in its own order: the search multiplies them in the objects' order, as the object-by-
+ * object search does. Also with more crossed than a search holds at once. */
+static void test_transmittance_order(void)
+{
+	static char text[1 << 16];
+	static const char *const materials[] = {"f 1 1 1 0.2 0 0 0.3 1\n", "f 1 1 1 0.2 0 0 0.7 1\n",
+						"f 1 1 1 0.2 0 0 0.9 1\n", "f 1 1 1 0.2 0 0 0.55 1\n",
+						"f 1 1 1 0.2 0 0 0 1\n"};
+	const accel *tree, *plain;
+	int i, at, rays = 0, many = 0, beyond = 0, mismatches = 0, blocked = 0;
+	test_seed(23);
+	at = snprintf(text, sizeof text,
+		      "v\nfrom 0 -50 0\nat 0 0 0\nup 0 0 1\nangle 30\nhither 1\n"
+		      "resolution 8 8\nl 0 -40 10\n");
+	for (i = 0; i < 600 && at > 0 && at < (int)sizeof text - 200; i++) {
+		/* One sphere in 40 opaque; the rest transmit. */
+		const char *f = materials[i % 40 == 39 ? 4 : i % 4];
+		at += snprintf(text + at, sizeof text - (size_t)at, "%ss %.17g %.17g %.17g %.17g\n",
+			       f, test_random_range(-4.0, 4.0), test_random_range(-4.0, 4.0),
+			       test_random_range(-4.0, 4.0), test_random_range(0.3, 0.9));
+	}
+	if (!CHECK(at > 0 && at < (int)sizeof text) ||
+	    !CHECK(test_parse_buffer(&s, "cloud.nff", text, NULL, NULL)))
+		return;
+	tree = test_accel(&s, 1);
+	plain = test_accel(&s, 0);
+	if (!CHECK(tree->tree.node_count > 0))
+		return;
+	for (i = 0; i < 4000; i++) {
+		double scale = test_double(s.camera.from.y) / -50.0;
+		vec3 from = vec_make(test_real(test_random_range(-6.0, 6.0) * scale),
+				     test_real(test_random_range(-6.0, 6.0) * scale),
+				     test_real(test_random_range(-6.0, 6.0) * scale));
+		vec3 to = vec_make(test_real(test_random_range(-6.0, 6.0) * scale),
+				   test_real(test_random_range(-6.0, 6.0) * scale),
+				   test_real(test_random_range(-6.0, 6.0) * scale));
+		vec3 d = vec_sub(to, from);
+		real through_tree, one_by_one;
+		int crossed = 0, blocker_tree = -1, blocker_each = -1, k;
+		ray r;
+		if (vec_max_abs(d) == REAL_C(0.0))
+			continue;
+		r.origin = from;
+		r.dir = dir_normalize(d);
+		through_tree = scene_transmittance(tree, &r, REAL_MAX, -1, &blocker_tree);
+		one_by_one = scene_transmittance(plain, &r, REAL_MAX, -1, &blocker_each);
+		for (k = 0; k < s.object_count; k++)
+			crossed += object_intersect(&s, k, &r, REAL_C(0.0), REAL_MAX, NULL);
+		rays++;
+		blocked += one_by_one == REAL_C(0.0);
+		many += crossed >= 3 && one_by_one > REAL_C(0.0);
+		beyond += crossed > BVH_CROSSED && one_by_one > REAL_C(0.0);
+		/* The same number (long double's padding bytes are not compared). */
+		mismatches += through_tree != one_by_one ||
+			      (blocker_tree < 0) != (blocker_each < 0);
+	}
+	CHECK(rays > 3900);
+	CHECK(many > rays / 4); /* most rays cross three transmitting spheres or more */
+	CHECK(beyond > 40); /* some cross more than a search holds at once */
+	CHECK(blocked > rays / 10);
+	CHECK_INT(mismatches, 0);
+}
 #endif
 
 void suite_bvh(void)
@@ -495,5 +562,6 @@ void suite_bvh(void)
 	test_flat_roof();
 	test_coincident_boxes();
 	test_tree_shape();
+	test_transmittance_order();
 #endif
 }
