@@ -518,14 +518,10 @@ static void test_transmittance_order(void)
 	if (!CHECK(tree->tree.node_count > 0))
 		return;
 	for (i = 0; i < 4000; i++) {
+		static const double lo[3] = {-6.0, -6.0, -6.0}, hi[3] = {6.0, 6.0, 6.0};
 		double scale = test_double(s.camera.from.y) / -50.0;
-		vec3 from = vec_make(test_real(test_random_range(-6.0, 6.0) * scale),
-				     test_real(test_random_range(-6.0, 6.0) * scale),
-				     test_real(test_random_range(-6.0, 6.0) * scale));
-		vec3 to = vec_make(test_real(test_random_range(-6.0, 6.0) * scale),
-				   test_real(test_random_range(-6.0, 6.0) * scale),
-				   test_real(test_random_range(-6.0, 6.0) * scale));
-		vec3 d = vec_sub(to, from);
+		vec3 from = random_point(lo, hi, scale);
+		vec3 d = vec_sub(random_point(lo, hi, scale), from);
 		real through_tree, one_by_one;
 		int crossed = 0, blocker_tree = -1, blocker_each = -1, k;
 		ray r;
