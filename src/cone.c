@@ -20,6 +20,14 @@ void cone_init(cone_shape *c, vec3 base, vec3 axis, real length, real base_radiu
 	c->slope = real_div(apex_radius - base_radius, length);
 }
 
+real cone_scale(const cone_shape *c)
+{
+	/* Half the larger radius: the box spans at least 0.8 of it on some axis. */
+	real ends = real_max(vec_max_abs(c->base), vec_max_abs(dir_madd(c->base, c->length, c->axis)));
+	real radius = real_max(real_fabs(c->base_radius), real_fabs(c->apex_radius));
+	return real_max(REAL_C(1.0), real_max(ends, radius / REAL_C(2.0)));
+}
+
 int cone_bounds(const cone_shape *c, vec3 *lo, vec3 *hi)
 {
 	/* Each end circle spans r * sqrt(1 - a_i^2) along axis i. */
@@ -66,33 +74,111 @@ void cone_measure(const cone_shape *c, real *extent, real *feature)
 	*feature = real_min(*feature, real_div(c->length, real_max(REAL_C(1.0), real_fabs(c->slope))));
 }
 
+/* Floating types: does the ray's line pass the axis's line farther off than the side
+ * ever lies (the larger radius)? Then it misses, and the quadratic need not be set up:
+ * most rays that come near a long thin cone's box pass it so. The distance is
+ * |to_base . n| / |n| with n = d x axis; the test is made in squares, without the root,
+ * and allows for the rounding of to_base . n (a few ulps of |to_base| |n|) and of n (a
+ * few ulps of 1), which the bound below covers while the ray is 7 degrees or more off
+ * the axis (|n|^2 >= 1/64); rays nearer the axis's direction go the whole way. */
+static int clear_of_axis(const cone_shape *c, const ray *r, vec3 to_base)
+{
+	vec3 n = vec_cross(dir_to_vec(r->dir), dir_to_vec(c->axis));
+	real n2 = vec_dot(n, n), offset = vec_dot(to_base, n);
+	real slack = real_fabs(to_base.x) + real_fabs(to_base.y) + real_fabs(to_base.z);
+	real reach = real_max(real_fabs(c->base_radius), real_fabs(c->apex_radius));
+	reach = real_add(reach, REAL_C(1024.0) * REAL_EPSILON * real_add(slack, reach));
+	return n2 >= REAL_C(0.015625) && real_mul(offset, offset) > real_mul(real_mul(reach, reach), n2);
+}
+
+/* How far along the ray the quadratic is set up from (see cone_intersect). The ray's
+ * point nearest the base keeps its terms of the size of the cone's extent (the ray, to
+ * meet the cone, passes within it). That is a long cone's length, far more than its
+ * radii: there, in the floating types, the point of the ray nearest the axis's point
+ * nearest the ray's line (that point held to the cone's length) keeps them of the size
+ * of the ray's distance from the axis and the radii, so that a long cone met far from
+ * its base is found as accurately as a short one (numerics.md, "Cones and cylinders").
+ * Only for a cone whose radius changes less than its length (|slope| <= 1): along a
+ * steep one the radius at that point may be far larger than where the ray meets it. Any
+ * point of the ray would do for the algebra. A ray along the axis (1 - dh^2 = 0) keeps
+ * the base. */
+static real start_of(const cone_shape *c, const ray *r, vec3 to_base, unit dh)
+{
+	real along = dir_dot_vec(r->dir, to_base), across, parallel, height;
+	if (REAL_FLOAT_FREE || !(real_fabs(c->slope) <= REAL_C(1.0)))
+		return along;
+	across = real_add(-dir_dot_vec(c->axis, to_base), real_mul_unit(along, dh));
+	parallel = REAL_C(1.0) - unit_to_real(real_mul_unit(dh, dh));
+	if (!(across > REAL_C(0.0) && parallel > REAL_C(0.0)))
+		return along;
+	height = across >= real_mul(c->length, parallel) ? c->length : real_div(across, parallel);
+	return real_add(along, real_mul_unit(height, dh));
+}
+
+/* Floating types: does the hit at `height` along the axis, `radial` its offset from it,
+ * lie within half the padding the hierarchy gives the cone's boxes (the offset scale of
+ * the cone's coordinates, bvh_build.c) of the cone's side? The quadratic's rounding can
+ * report a near miss as a hit; this bounds how near, so that a box of the cone, or of a
+ * piece of its length, holds every hit the test reports, and the search through the
+ * hierarchy finds what the search object by object finds. In the plane through the
+ * axis the side is the segment from (0, r0) to (length, r1), and (height, r(height)) is
+ * on it: a hit no farther out than that is near enough. A true hit may be farther out
+ * where the cone is steep (the radius at a rounded height is far off), so the other
+ * hits are measured from (height, |radial|) to the segment, which for a true hit is a
+ * few ulps of the coordinates whatever the slope. */
+static int near_side(const cone_shape *c, vec3 radial, real height)
+{
+	real reach = real_surface_offset(cone_scale(c), 1) / REAL_C(2.0);
+	real r0 = real_fabs(c->base_radius), span = real_fabs(c->apex_radius) - r0;
+	real radius = real_fabs(real_add(c->base_radius, real_mul(c->slope, height)));
+	real out, along, side2;
+	if (vec_dot(radial, radial) <= real_mul(radius + reach, radius + reach))
+		return 1;
+	out = real_sqrt(vec_dot(radial, radial)) - r0; /* from the base's rim */
+	along = height * c->length + out * span;
+	side2 = c->length * c->length + span * span;
+	if (along <= REAL_C(0.0))
+		return height * height + out * out <= reach * reach;
+	if (along >= side2) {
+		real up = height - c->length, beyond = out - span;
+		return up * up + beyond * beyond <= reach * reach;
+	}
+	return real_fabs(height * span - out * c->length) <= reach * real_sqrt(side2);
+}
+
 int cone_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h)
 {
 	const cone_shape *c = &o->u.cone;
-	/* The quadratic is set up from the point of the ray nearest the cone's base, not
-	 * from its origin: from a distant eye the terms below are of the size of the
-	 * distance squared, and the few that remain of the cone cancel away (as in the
-	 * textbook sphere test; numerics.md section 1). From that point they are of the
-	 * cone's own size; the roots are then distances from it. */
-	real shift = dir_dot_vec(r->dir, vec_sub(c->base, r->origin));
-	vec3 origin = dir_madd(r->origin, shift, r->dir);
-	vec3 f = vec_sub(origin, c->base);
-	real oh = dir_dot_vec(c->axis, f);
+	/* The quadratic is set up from a point of the ray near the cone, not from its origin:
+	 * from a distant eye the terms below are of the size of the distance squared, and
+	 * the few that remain of the cone cancel away (as in the textbook sphere test;
+	 * numerics.md section 1). Fixed point takes the ray's point nearest the base, the
+	 * floating types the one nearest the axis (nearest_height). The roots are then
+	 * distances from that point. */
+	vec3 to_base = vec_sub(c->base, r->origin), origin, f, fp;
 	unit dh = dir_dot(r->dir, c->axis);
-	/* Components of origin and direction perpendicular to the axis. */
-	vec3 fp = dir_madd(f, -oh, c->axis);
-	dir3 dp = dir_madd_unit(r->dir, -dh, c->axis);
-	/* Saturating sums (real_add): a steep cone seen from far away takes these past fixed
-	 * point's range, where the test is meaningless anyway but must stay defined. */
-	real radius_at_origin = real_add(c->base_radius, real_mul(c->slope, oh));
-	real slope_dh = real_mul_unit(c->slope, dh);
-	/* |fp + t dp|^2 = (radius_at_origin + slope dh t)^2, as a t^2 + 2 b t + cc = 0. */
-	real a = real_add(unit_to_real(dir_dot(dp, dp)), -real_mul(slope_dh, slope_dh)); /* unitless */
-	real b = real_add(dir_dot_vec(dp, fp), -real_mul(radius_at_origin, slope_dh));
-	real2 cc = real2_sub(vec_dot2(fp, fp), real_mul2(radius_at_origin, radius_at_origin));
+	real shift, oh, radius_at_origin, slope_dh, a, b;
+	real2 cc;
+	dir3 dp;
 	real roots[2];
 	int i;
-
+	if (!REAL_FLOAT_FREE && clear_of_axis(c, r, to_base))
+		return 0;
+	shift = start_of(c, r, to_base, dh);
+	origin = dir_madd(r->origin, shift, r->dir);
+	f = vec_sub(origin, c->base);
+	oh = dir_dot_vec(c->axis, f);
+	/* Components of origin and direction perpendicular to the axis. */
+	fp = dir_madd(f, -oh, c->axis);
+	dp = dir_madd_unit(r->dir, -dh, c->axis);
+	/* Saturating sums (real_add): a steep cone seen from far away takes these past fixed
+	 * point's range, where the test is meaningless anyway but must stay defined. */
+	radius_at_origin = real_add(c->base_radius, real_mul(c->slope, oh));
+	slope_dh = real_mul_unit(c->slope, dh);
+	/* |fp + t dp|^2 = (radius_at_origin + slope dh t)^2, as a t^2 + 2 b t + cc = 0. */
+	a = real_add(unit_to_real(dir_dot(dp, dp)), -real_mul(slope_dh, slope_dh)); /* unitless */
+	b = real_add(dir_dot_vec(dp, fp), -real_mul(radius_at_origin, slope_dh));
+	cc = real2_sub(vec_dot2(fp, fp), real_mul2(radius_at_origin, radius_at_origin));
 	if (!solve_quadratic(a, b, cc, real2_sub(real_mul2(b, b), real2_scale(cc, a)), &roots[0],
 			     &roots[1]))
 		return 0;
@@ -106,13 +192,20 @@ int cone_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h)
 		/* The quadric is a double cone: keep the part between the two end circles. */
 		if (height < REAL_C(0.0) || height > c->length)
 			continue;
-		/* A shadow query needs no normal unless the cone shows only its inside. */
-		if (!h && !(o->flags & OBJ_INSIDE_ONLY))
+		/* A shadow query needs no normal unless the cone shows only its inside (nor,
+		 * in fixed point, the hit point). */
+		if (REAL_FLOAT_FREE && !h && !(o->flags & OBJ_INSIDE_ONLY))
 			return 1;
 		/* From the nearer point too: o + t d from a distant eye keeps only the
 		 * eye's precision. */
 		p = dir_madd(origin, roots[i], r->dir);
 		radial = dir_madd(vec_sub(p, c->base), -height, c->axis);
+		if (!REAL_FLOAT_FREE) {
+			if (!near_side(c, radial, height))
+				continue;
+			if (!h && !(o->flags & OBJ_INSIDE_ONLY))
+				return 1;
+		}
 		/* Gradient of |radial|^2 - r(h)^2, halved: outward on the side wall. */
 		gradient = dir_madd(radial,
 				    -real_mul(real_add(c->base_radius, real_mul(c->slope, height)),

@@ -98,6 +98,10 @@ void sphere_measure(const sphere_shape *s, real *extent, real *feature);
 int polygon_bounds(const scene *s, const polygon_shape *poly, vec3 *lo, vec3 *hi);
 real polygon_clearance(const scene *s, const polygon_shape *g, const vec3 *p);
 int cone_bounds(const cone_shape *c, vec3 *lo, vec3 *hi);
+/* The size of a cone's coordinates (its ends', and half its larger radius), at least 1:
+ * no more than its box's, by whose surface offset the hierarchy pads its boxes; its test
+ * reports no hit farther off its side than half that. */
+real cone_scale(const cone_shape *c);
 real cone_clearance(const cone_shape *g, const vec3 *p);
 void cone_measure(const cone_shape *c, real *extent, real *feature);
 int hedron_bounds(const scene *s, const hedron_shape *g, vec3 *lo, vec3 *hi);

@@ -1,6 +1,7 @@
 /* test_cone.c - uncapped cylinders and cones (NFF c): side hits, the open ends, rays
  * parallel to the axis or to a side line, the tip, and NFF's inside-only form.
  * See LICENSE for copyright and licence. */
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 
@@ -232,10 +233,70 @@ static void test_interval(void)
 	CHECK(!cone_intersect(&o, &r, REAL_C(0.0), REAL_MAX, &h));
 }
 
+/* Long rods met far from their base (floating types; fixed point's range budget is 4096):
+ * a cylinder of radius 1 and length L along an oblique axis, centred on the origin, and
+ * rays that pass its axis at a distance rho of 0.99 (a hit) or 1.01 (a miss), at
+ * heights from a tenth to nine tenths of L and at 20 to 90 degrees to the axis, from 30
+ * away. The hit is at t = 30 - sqrt(1 - rho^2) / sin(angle). Set up from the ray's point
+ * nearest the base, the quadratic's terms were of the size of L^2 and the rod's own
+ * size cancelled away: in double a rod 10^8 long answered these rays by chance. */
+static void test_long_rods(void)
+{
+	int exponent, step, angle, side, failures = 0, tests = 0;
+	const int longest = REAL_FLOAT_FREE ? 0 : sizeof(real) == sizeof(float) ? 4 : 9;
+	/* The cases are made in double: long double is held to double's precision. */
+	const double precision = (double)REAL_EPSILON > DBL_EPSILON ? (double)REAL_EPSILON : DBL_EPSILON;
+	for (exponent = 2; exponent <= longest; exponent++)
+		for (step = 1; step <= 9; step += 2)
+			for (angle = 20; angle <= 90; angle += 35)
+				for (side = 0; side < 2; side++) {
+					double length = pow(10.0, exponent), rho = side ? 1.01 : 0.99;
+					double phi = angle * 3.14159265358979323846 / 180.0;
+					double a[3] = {0.48, 0.6, 0.64}; /* unit */
+					double e1[3] = {0.78086880944303, -0.62469504755443,
+							0.0}; /* unit, across a */
+					double e2[3] = {a[1] * e1[2] - a[2] * e1[1],
+							a[2] * e1[0] - a[0] * e1[2],
+							a[0] * e1[1] - a[1] * e1[0]};
+					double height = length * step / 10.0, from[3], d[3];
+					object o;
+					ray r;
+					hit h;
+					int k, got;
+					for (k = 0; k < 3; k++) {
+						d[k] = cos(phi) * a[k] + sin(phi) * e2[k];
+						from[k] = (height - length / 2) * a[k] + rho * e1[k] -
+							  30.0 * d[k];
+					}
+					o.kind = SHAPE_CONE;
+					o.flags = OBJ_TWO_SIDED;
+					o.material = 0;
+					o.line = 0;
+					cone_init(&o.u.cone,
+						  vec_make((real)(-length / 2 * a[0]), (real)(-length / 2 * a[1]),
+							   (real)(-length / 2 * a[2])),
+						  vec_make((real)a[0], (real)a[1], (real)a[2]), (real)length,
+						  REAL_C(1.0), REAL_C(1.0));
+					r.origin = vec_make((real)from[0], (real)from[1], (real)from[2]);
+					r.dir = dir_normalize(vec_make((real)d[0], (real)d[1], (real)d[2]));
+					got = cone_intersect(&o, &r, REAL_C(0.0), REAL_MAX, &h);
+					tests++;
+					if (got != !side ||
+					    (got && fabs((double)h.t - (30.0 - sqrt(1.0 - rho * rho) / sin(phi))) >
+							    64.0 * precision * length))
+						failures++;
+				}
+	if (REAL_FLOAT_FREE)
+		return;
+	CHECK(tests == (sizeof(real) == sizeof(float) ? 3 : 8) * 5 * 3 * 2);
+	CHECK(failures == 0);
+}
+
 void suite_cone(void)
 {
 	size_t i;
 	for (i = 0; i < sizeof cases / sizeof cases[0]; i++)
 		run_case(&cases[i]);
 	test_interval();
+	test_long_rods();
 }
