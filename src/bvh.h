@@ -116,6 +116,12 @@ typedef struct {
  * (node_count = 0) and are searched object by object. */
 void bvh_build(bvh_tree *t, const scene *s);
 
+/* How many boxes the build gives bounded object `index` of s when capacity allows: a
+ * long cone's side is cut into pieces, each in a leaf of its own; others have one. The
+ * bounds of its piece `piece` (of `pieces`) go into lo, hi. */
+int bvh_object_pieces(const scene *s, int index);
+int bvh_piece_bounds(const scene *s, int index, int piece, int pieces, vec3 *lo, vec3 *hi);
+
 /* Nearest hit along r over (0, tmax), through the hierarchy (and the unbounded objects),
  * leaving out object `skip` (-1 for none; see object_can_rehit); fills h (normals not yet
  * faced to the ray) and h->object. */

@@ -457,54 +457,138 @@ static void wide_fill(bvh_tree *t, int w, const int *lane, int n)
 }
 #endif
 
+/* A long cone across the axes (SPD rings' rods) fills a small part of its box, and a ray
+ * through the box mostly misses it: its side is given in 2, 4 or 8 pieces of equal
+ * length, each with its own box, as many as make the boxes' total area (the chance that
+ * a ray meets one) least, if that is under PIECES_GAIN of the whole box's. A ray may then
+ * find the cone in two leaves: a nearest hit is found again at the distance it already
+ * has, which changes nothing, but a shadow ray would count a transmitting object's kt
+ * twice, so only opaque cones are cut. Floating types only (fixed point keeps its tree). */
+#define PIECES_MAX 8
+#define PIECES_GAIN REAL_C(0.75)
+
+static int pieces_of(const scene *s, const object *o)
+{
+#if BVH_WIDE && RT_SHAPE_CONE
+	real2 whole = 0, least = 0;
+	int pieces, best = 1;
+	if (o->kind != SHAPE_CONE || s->materials[o->material].kt > REAL_C(0.0))
+		return 1;
+	for (pieces = 1; pieces <= PIECES_MAX; pieces *= 2) {
+		real2 total = 0;
+		int k;
+		for (k = 0; k < pieces; k++) {
+			vec3 lo, hi;
+			cone_piece_bounds(&o->u.cone, k, pieces, &lo, &hi);
+			total += half_area(lo, hi);
+		}
+		if (pieces == 1) {
+			whole = least = total;
+			continue;
+		}
+		/* Past the least the boxes' overlap grows faster than they shrink. */
+		if (!(total < least))
+			break;
+		least = total;
+		if (total < real2_scale(whole, PIECES_GAIN))
+			best = pieces;
+	}
+	return best;
+#else
+	(void)s;
+	(void)o;
+	return 1;
+#endif
+}
+
+int bvh_object_pieces(const scene *s, int index)
+{
+	return pieces_of(s, &s->objects[index]);
+}
+
+int bvh_piece_bounds(const scene *s, int index, int piece, int pieces, vec3 *lo, vec3 *hi)
+{
+	const object *o = &s->objects[index];
+#if RT_SHAPE_CONE
+	if (pieces > 1)
+		return cone_piece_bounds(&o->u.cone, piece, pieces, lo, hi);
+#else
+	(void)piece;
+	(void)pieces;
+#endif
+	return shape_bounds(s, o, lo, hi);
+}
+
+/* The padding of an object's boxes: the secondary-ray offset of the size of its whole
+ * box [lo, hi] (a piece's too: the cone test bounds its near misses by half of that,
+ * cone.c), so that rounding never loses a hit the object's own test would find. */
+static real pad_of(vec3 lo, vec3 hi)
+{
+	return real_surface_offset(real_max(REAL_C(1.0), real_max(vec_max_abs(lo), vec_max_abs(hi))),
+				   1);
+}
+
+/* items[at] gets the box [lo, hi] of object `index`, grown by `pad` on every side. */
+static void item_make(int at, int index, vec3 lo, vec3 hi, real pad)
+{
+	vec3 p = vec_make(pad, pad, pad);
+	items[at].lo = corner_outward(vec_sub(lo, p), 0);
+	items[at].hi = corner_outward(vec_add(hi, p), 1);
+	items[at].object = index;
+}
+
 void bvh_build(bvh_tree *t, const scene *s)
 {
-	static unsigned char bounded[RT_MAX_OBJECTS];
-	int i, next;
+	int i, boxes = 0; /* items made: the bounded objects' boxes, from items[0] */
 	t->node_count = 0;
 	t->unbounded_count = 0;
 	t->wide_count = 0;
 	if (s->object_count < RT_BVH_MIN_OBJECTS)
 		return;
 	pages_prepare(items, (size_t)s->object_count * sizeof items[0]);
-	pages_prepare(bounded, (size_t)s->object_count);
 	pages_prepare(t->index, (size_t)s->object_count * sizeof t->index[0]);
 	for (i = 0; i < s->object_count; i++) {
+		const object *o = &s->objects[i];
 		vec3 lo, hi;
-		bounded[i] = shape_bounds(s, &s->objects[i], &lo, &hi) && vec_is_finite(lo) &&
-			     vec_is_finite(hi);
-		if (bounded[i]) {
-			/* Pad by the secondary-ray offset scale so rounding never loses a hit that
-			 * the object's own test would find. */
-			real pad = real_surface_offset(
-				real_max(REAL_C(1.0), real_max(vec_max_abs(lo), vec_max_abs(hi))), 1);
-			vec3 p = vec_make(pad, pad, pad);
-			build_item *item = &items[i];
-			item->lo = corner_outward(vec_sub(lo, p), 0);
-			item->hi = corner_outward(vec_add(hi, p), 1);
-			item->object = i;
-		} else {
+		real pad;
+		int pieces, k;
+		if (!(shape_bounds(s, o, &lo, &hi) && vec_is_finite(lo) && vec_is_finite(hi))) {
 			t->index[t->unbounded_count++] = i;
+			continue;
+		}
+		/* Pieces only while the boxes so far, these, and one for each object still to
+		 * come fit the capacity (which bounds the tree's nodes). */
+		pieces = pieces_of(s, o);
+		if (t->unbounded_count + boxes + pieces + (s->object_count - i - 1) >
+		    RT_MAX_OBJECTS)
+			pieces = 1;
+		pad = pad_of(lo, hi);
+		if (pieces == 1) {
+			item_make(boxes++, i, lo, hi, pad);
+			continue;
+		}
+		pages_ahead(items, sizeof items[0], (size_t)boxes, (size_t)pieces, RT_MAX_OBJECTS);
+		for (k = 0; k < pieces; k++) {
+			(void)bvh_piece_bounds(s, i, k, pieces, &lo, &hi);
+			item_make(boxes++, i, lo, hi, pad);
 		}
 	}
-	/* Unbounded objects first, then the bounded ones the tree is built over: item i
-	 * moves up to slot unbounded_count + (bounded objects before i), from the last down,
-	 * so that none is overwritten before it moves; the index takes the items' order when
-	 * the tree is done. */
-	next = s->object_count;
-	for (i = s->object_count - 1; i >= 0; i--)
-		if (bounded[i])
-			items[--next] = items[i];
-	if (next == s->object_count)
+	if (boxes == 0)
 		return;
+	/* Unbounded objects first in the index, then the boxes the tree is built over: they
+	 * move up past the unbounded, from the last down, so that none is overwritten before
+	 * it moves; the index takes the items' order when the tree is done. */
+	if (t->unbounded_count)
+		for (i = boxes - 1; i >= 0; i--)
+			items[t->unbounded_count + i] = items[i];
+	pages_prepare(t->index, (size_t)(t->unbounded_count + boxes) * sizeof t->index[0]);
 	pages_ahead(t->nodes, sizeof t->nodes[0], 0, 1, 2 * RT_MAX_OBJECTS); /* the root */
 	t->node_count = 1;
 	{
-		int count = s->object_count - t->unbounded_count;
-		item_bounds all = bounds_of(t->unbounded_count, count);
-		build_node(t, 0, t->unbounded_count, count, &all, 0);
+		item_bounds all = bounds_of(t->unbounded_count, boxes);
+		build_node(t, 0, t->unbounded_count, boxes, &all, 0);
 	}
-	for (i = t->unbounded_count; i < s->object_count; i++)
+	for (i = t->unbounded_count; i < t->unbounded_count + boxes; i++)
 		t->index[i] = items[i].object;
 #if BVH_WIDE
 	t->wide_count = 0;

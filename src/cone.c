@@ -30,16 +30,34 @@ real cone_scale(const cone_shape *c)
 
 int cone_bounds(const cone_shape *c, vec3 *lo, vec3 *hi)
 {
+	return cone_piece_bounds(c, 0, 1, lo, hi);
+}
+
+/* The part of the side between two heights lies in the hull of its two end circles, and
+ * its box is theirs. The heights are length * piece / pieces, the one between two pieces
+ * the same number for both, so that no part of the side falls between them; the last
+ * piece ends at the apex and its radius exactly, and one piece is the whole cone. */
+int cone_piece_bounds(const cone_shape *c, int piece, int pieces, vec3 *lo, vec3 *hi)
+{
 	/* Each end circle spans r * sqrt(1 - a_i^2) along axis i. */
-	vec3 a = dir_to_vec(c->axis), apex = dir_madd(c->base, c->length, c->axis);
+	vec3 a = dir_to_vec(c->axis);
 	vec3 disc = vec_make(real_sqrt(real_max(REAL_C(0.0), REAL_C(1.0) - real_mul(a.x, a.x))),
 			     real_sqrt(real_max(REAL_C(0.0), REAL_C(1.0) - real_mul(a.y, a.y))),
 			     real_sqrt(real_max(REAL_C(0.0), REAL_C(1.0) - real_mul(a.z, a.z))));
+	int end;
 	box_empty(lo, hi);
-	box_grow(lo, hi, vec_madd(c->base, c->base_radius, disc));
-	box_grow(lo, hi, vec_madd(c->base, -c->base_radius, disc));
-	box_grow(lo, hi, vec_madd(apex, c->apex_radius, disc));
-	box_grow(lo, hi, vec_madd(apex, -c->apex_radius, disc));
+	for (end = 0; end < 2; end++) {
+		int k = piece + end;
+		real height =
+			real_div(real_mul(c->length, real_from_int(k)), real_from_int(pieces));
+		vec3 centre = k == 0 ? c->base
+			    : dir_madd(c->base, k == pieces ? c->length : height, c->axis);
+		real radius = k == 0	  ? c->base_radius
+			      : k == pieces ? c->apex_radius
+					    : real_add(c->base_radius, real_mul(c->slope, height));
+		box_grow(lo, hi, vec_madd(centre, radius, disc));
+		box_grow(lo, hi, vec_madd(centre, -radius, disc));
+	}
 	return 1;
 }
 
