@@ -42,4 +42,14 @@ static inline int box_holds(vec3 lo, vec3 hi, vec3 p)
 	       p.z <= hi.z;
 }
 
+/* Half the surface area of the box [lo, hi], 0 for an empty one: the chance that a ray
+ * meets it, up to a common factor (the SAH). */
+static inline real2 box_half_area(vec3 lo, vec3 hi)
+{
+	vec3 d = vec_sub(hi, lo);
+	if (d.x < 0 || d.y < 0 || d.z < 0)
+		return 0;
+	return real_mul2(d.x, d.y) + real_mul2(d.y, d.z) + real_mul2(d.z, d.x);
+}
+
 #endif

@@ -122,6 +122,10 @@ void bvh_build(bvh_tree *t, const scene *s);
 int bvh_object_pieces(const scene *s, int index);
 int bvh_piece_bounds(const scene *s, int index, int piece, int pieces, vec3 *lo, vec3 *hi);
 
+/* The padding of an object's boxes, each side grown by it, from the object's whole box
+ * [lo, hi] (bvh_pieces.c). */
+real bvh_box_pad(vec3 lo, vec3 hi);
+
 /* Nearest hit along r over (0, tmax), through the hierarchy (and the unbounded objects),
  * leaving out object `skip` (-1 for none; see object_can_rehit); fills h (normals not yet
  * faced to the ray) and h->object. */

@@ -154,14 +154,6 @@ static inline int bin_at(const axis_bins *a, centre_coord c)
 #endif
 }
 
-static real2 half_area(vec3 lo, vec3 hi)
-{
-	vec3 d = vec_sub(hi, lo);
-	if (d.x < 0 || d.y < 0 || d.z < 0)
-		return 0;
-	return real_mul2(d.x, d.y) + real_mul2(d.y, d.z) + real_mul2(d.z, d.x);
-}
-
 /* Nodes of at most this many objects (most of a tree's nodes) are split by sorting their
  * centres on each axis and pricing every plane between them: exact where binning is not,
  * and with few objects far cheaper than sweeping BINS bins on three axes, which made
@@ -191,7 +183,7 @@ static int leaf_is_better(int best_axis, real best_cost, int count)
 static int sorted_split(int first, int count, const item_bounds *node, int *axis_out,
 			item_bounds child[2])
 {
-	real2 node_area = half_area(point_vec(node->lo), point_vec(node->hi));
+	real2 node_area = box_half_area(point_vec(node->lo), point_vec(node->hi));
 	int order[3][SORTED_MAX];
 	real best_cost = REAL_MAX;
 	int best_axis = -1, best_left = 0, axis, i, j;
@@ -214,18 +206,20 @@ static int sorted_split(int first, int count, const item_bounds *node, int *axis
 		for (i = count - 1; i > 0; i--) {
 			const build_item *o = &items[first + order[axis][i]];
 			points_grow(&run_lo, &run_hi, &o->lo, &o->hi);
-			right_area[i] = half_area(point_vec(run_lo), point_vec(run_hi));
+			right_area[i] = box_half_area(point_vec(run_lo), point_vec(run_hi));
 		}
 		points_empty(&run_lo, &run_hi);
 		for (i = 0; i < count - 1; i++) {
 			const build_item *o = &items[first + order[axis][i]];
 			real cost;
+			real2 left_area;
 			points_grow(&run_lo, &run_hi, &o->lo, &o->hi);
 			/* Equal centres stay together, as in a bin. */
 			if (!(key[i] < key[i + 1]))
 				continue;
-			cost = split_cost(half_area(point_vec(run_lo), point_vec(run_hi)), i + 1,
-					  right_area[i + 1], count - i - 1, node_area);
+			left_area = box_half_area(point_vec(run_lo), point_vec(run_hi));
+			cost = split_cost(left_area, i + 1, right_area[i + 1], count - i - 1,
+					  node_area);
 			if (cost < best_cost) {
 				best_cost = cost;
 				best_axis = axis;
@@ -253,7 +247,7 @@ static int sorted_split(int first, int count, const item_bounds *node, int *axis
 static int sah_split(int first, int count, const item_bounds *node, int *axis_out,
 		     item_bounds child[2])
 {
-	real2 node_area = half_area(point_vec(node->lo), point_vec(node->hi));
+	real2 node_area = box_half_area(point_vec(node->lo), point_vec(node->hi));
 	real best_cost;
 	axis_bins bins[3];
 	int bin_count[3][BINS];
@@ -297,8 +291,9 @@ static int sah_split(int first, int count, const item_bounds *node, int *axis_ou
 			if (bin_count[axis][i])
 				points_grow(&run_lo, &run_hi, &bin_lo[axis][i], &bin_hi[axis][i]);
 			/* Only the planes after a bin with objects are priced (below). */
-			right_area[i] = bin_count[axis][i - 1] ? half_area(point_vec(run_lo), point_vec(run_hi))
-								: 0;
+			right_area[i] = bin_count[axis][i - 1]
+					      ? box_half_area(point_vec(run_lo), point_vec(run_hi))
+					      : 0;
 			right_count[i] = n;
 		}
 		points_empty(&run_lo, &run_hi);
@@ -313,7 +308,7 @@ static int sah_split(int first, int count, const item_bounds *node, int *axis_ou
 			 * node, where the pricing is most of the work. */
 			if (n == 0 || right_count[i + 1] == 0 || !bin_count[axis][i])
 				continue;
-			cost = split_cost(half_area(point_vec(run_lo), point_vec(run_hi)), n,
+			cost = split_cost(box_half_area(point_vec(run_lo), point_vec(run_hi)), n,
 					  right_area[i + 1], right_count[i + 1], node_area);
 			if (cost < best_cost) {
 				best_cost = cost;
@@ -422,7 +417,7 @@ static int wide_collapse(bvh_tree *t, int b)
 		real2 widest_area = 0;
 		for (i = 0; i < n; i++) {
 			const bvh_node *c = &t->nodes[lane[i]];
-			real2 area = half_area(bvh_corner(c, 0), bvh_corner(c, 1));
+			real2 area = box_half_area(bvh_corner(c, 0), bvh_corner(c, 1));
 			if (!c->count && (widest < 0 || area > widest_area)) {
 				widest = i;
 				widest_area = area;
@@ -457,77 +452,6 @@ static void wide_fill(bvh_tree *t, int w, const int *lane, int n)
 }
 #endif
 
-/* A long cone across the axes (SPD rings' rods) fills a small part of its box, and a ray
- * through the box mostly misses it: its side is given in 2, 4 or 8 pieces of equal
- * length, each with its own box, as many as make the boxes' total area (the chance that
- * a ray meets one) least, if that is under PIECES_GAIN of the whole box's. A ray may then
- * find the cone in two leaves: a nearest hit is found again at the distance it already
- * has, which changes nothing, but a shadow ray would count a transmitting object's kt
- * twice, so only opaque cones are cut. Floating types only (fixed point keeps its tree). */
-#define PIECES_MAX 8
-#define PIECES_GAIN REAL_C(0.75)
-
-static int pieces_of(const scene *s, const object *o)
-{
-#if BVH_WIDE && RT_SHAPE_CONE
-	real2 whole = 0, least = 0;
-	int pieces, best = 1;
-	if (o->kind != SHAPE_CONE || s->materials[o->material].kt > REAL_C(0.0))
-		return 1;
-	for (pieces = 1; pieces <= PIECES_MAX; pieces *= 2) {
-		real2 total = 0;
-		int k;
-		for (k = 0; k < pieces; k++) {
-			vec3 lo, hi;
-			cone_piece_bounds(&o->u.cone, k, pieces, &lo, &hi);
-			total += half_area(lo, hi);
-		}
-		if (pieces == 1) {
-			whole = least = total;
-			continue;
-		}
-		/* Past the least the boxes' overlap grows faster than they shrink. */
-		if (!(total < least))
-			break;
-		least = total;
-		if (total < real2_scale(whole, PIECES_GAIN))
-			best = pieces;
-	}
-	return best;
-#else
-	(void)s;
-	(void)o;
-	return 1;
-#endif
-}
-
-int bvh_object_pieces(const scene *s, int index)
-{
-	return pieces_of(s, &s->objects[index]);
-}
-
-int bvh_piece_bounds(const scene *s, int index, int piece, int pieces, vec3 *lo, vec3 *hi)
-{
-	const object *o = &s->objects[index];
-#if RT_SHAPE_CONE
-	if (pieces > 1)
-		return cone_piece_bounds(&o->u.cone, piece, pieces, lo, hi);
-#else
-	(void)piece;
-	(void)pieces;
-#endif
-	return shape_bounds(s, o, lo, hi);
-}
-
-/* The padding of an object's boxes: the secondary-ray offset of the size of its whole
- * box [lo, hi] (a piece's too: the cone test bounds its near misses by half of that,
- * cone.c), so that rounding never loses a hit the object's own test would find. */
-static real pad_of(vec3 lo, vec3 hi)
-{
-	return real_surface_offset(real_max(REAL_C(1.0), real_max(vec_max_abs(lo), vec_max_abs(hi))),
-				   1);
-}
-
 /* items[at] gets the box [lo, hi] of object `index`, grown by `pad` on every side. */
 static void item_make(int at, int index, vec3 lo, vec3 hi, real pad)
 {
@@ -558,11 +482,11 @@ void bvh_build(bvh_tree *t, const scene *s)
 		}
 		/* Pieces only while the boxes so far, these, and one for each object still to
 		 * come fit the capacity (which bounds the tree's nodes). */
-		pieces = pieces_of(s, o);
+		pieces = bvh_object_pieces(s, i);
 		if (t->unbounded_count + boxes + pieces + (s->object_count - i - 1) >
 		    RT_MAX_OBJECTS)
 			pieces = 1;
-		pad = pad_of(lo, hi);
+		pad = bvh_box_pad(lo, hi);
 		if (pieces == 1) {
 			item_make(boxes++, i, lo, hi, pad);
 			continue;

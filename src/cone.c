@@ -135,7 +135,7 @@ static real start_of(const cone_shape *c, const ray *r, vec3 to_base, unit dh)
 
 /* Floating types: does the hit at `height` along the axis, `radial` its offset from it,
  * lie within half the padding the hierarchy gives the cone's boxes (the offset scale of
- * the cone's coordinates, bvh_build.c) of the cone's side? The quadratic's rounding can
+ * the cone's coordinates, bvh_pieces.c) of the cone's side? The quadratic's rounding can
  * report a near miss as a hit; this bounds how near, so that a box of the cone, or of a
  * piece of its length, holds every hit the test reports, and the search through the
  * hierarchy finds what the search object by object finds. In the plane through the
@@ -149,10 +149,10 @@ static int near_side(const cone_shape *c, vec3 radial, real height)
 	real reach = real_surface_offset(cone_scale(c), 1) / REAL_C(2.0);
 	real r0 = real_fabs(c->base_radius), span = real_fabs(c->apex_radius) - r0;
 	real radius = real_fabs(real_add(c->base_radius, real_mul(c->slope, height)));
-	real out, along, side2;
-	if (vec_dot(radial, radial) <= real_mul(radius + reach, radius + reach))
+	real radial2 = vec_dot(radial, radial), out, along, side2;
+	if (radial2 <= real_mul(radius + reach, radius + reach))
 		return 1;
-	out = real_sqrt(vec_dot(radial, radial)) - r0; /* from the base's rim */
+	out = real_sqrt(radial2) - r0; /* from the base's rim */
 	along = height * c->length + out * span;
 	side2 = c->length * c->length + span * span;
 	if (along <= REAL_C(0.0))
@@ -170,9 +170,9 @@ int cone_intersect(const object *o, const ray *r, real tmin, real tmax, hit *h)
 	/* The quadratic is set up from a point of the ray near the cone, not from its origin:
 	 * from a distant eye the terms below are of the size of the distance squared, and
 	 * the few that remain of the cone cancel away (as in the textbook sphere test;
-	 * numerics.md section 1). Fixed point takes the ray's point nearest the base, the
-	 * floating types the one nearest the axis (nearest_height). The roots are then
-	 * distances from that point. */
+	 * numerics.md section 1). Fixed point, and the floating types on a steep cone
+	 * (|slope| > 1), take the ray's point nearest the base; the floating types otherwise
+	 * the one nearest the axis (start_of). The roots are then distances from that point. */
 	vec3 to_base = vec_sub(c->base, r->origin), origin, f, fp;
 	unit dh = dir_dot(r->dir, c->axis);
 	real shift, oh, radius_at_origin, slope_dh, a, b;

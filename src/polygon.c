@@ -277,7 +277,7 @@ int polygon_bounds(const scene *s, const polygon_shape *poly, vec3 *lo, vec3 *hi
 }
 
 /* Whether p lies in the polygon's bounds, padded for rounding as the hierarchy pads them
- * (bvh_build.c). */
+ * (bvh_pieces.c). */
 static int reaches(const scene *s, const polygon_shape *poly, vec3 p)
 {
 	vec3 lo, hi, pad;

@@ -102,7 +102,7 @@ int cone_bounds(const cone_shape *c, vec3 *lo, vec3 *hi);
  * no more than its box's, by whose surface offset the hierarchy pads its boxes; its test
  * reports no hit farther off its side than half that. */
 real cone_scale(const cone_shape *c);
-/* The bounds of piece `piece` of `pieces` equal lengths of the cone's side (bvh_build.c
+/* The bounds of piece `piece` of `pieces` equal lengths of the cone's side (bvh_pieces.c
  * gives a long cone several boxes); one piece is cone_bounds. */
 int cone_piece_bounds(const cone_shape *c, int piece, int pieces, vec3 *lo, vec3 *hi);
 real cone_clearance(const cone_shape *g, const vec3 *p);
