@@ -19,6 +19,7 @@
 #define REAL_RANGE_TEXT "the range of Q16.16 fixed point"
 #define real_format(x, shift, buf, size) fixed_format((x), (shift), (buf), (size))
 #else
+#include <stdint.h>
 #include <stdio.h>
 
 #include <float.h>
@@ -43,20 +44,31 @@
 #endif
 
 /* [+-]digits[.digits][e[+-]digits] read exactly into *out, or 0 when the token is not
- * of that form or not exact so (strtod then reads it). */
+ * of that form or not exact so (strtod then reads it). The digits are gathered as a
+ * whole number in integer arithmetic and the power of ten comes from a table: the same
+ * exact operands as a product built digit by digit, in a third of the instructions
+ * (SPD teapot-s12's 167 k numbers). */
 static inline int real_from_short_decimal(const char *c, real *out)
 {
-	real mantissa = REAL_C(0.0), power = REAL_C(1.0);
-	int negative = *c == '-', digits = 0, scale = 0, exponent = 0, i;
+	/* 10^k, exact in double (and so in long double) up to 10^22; float reads only up
+	 * to 10^10 (REAL_EXACT_POW10). */
+	static const real exact_pow10[23] = {
+		REAL_C(1e0),  REAL_C(1e1),  REAL_C(1e2),  REAL_C(1e3),  REAL_C(1e4),  REAL_C(1e5),
+		REAL_C(1e6),  REAL_C(1e7),  REAL_C(1e8),  REAL_C(1e9),  REAL_C(1e10), REAL_C(1e11),
+		REAL_C(1e12), REAL_C(1e13), REAL_C(1e14), REAL_C(1e15), REAL_C(1e16), REAL_C(1e17),
+		REAL_C(1e18), REAL_C(1e19), REAL_C(1e20), REAL_C(1e21), REAL_C(1e22)};
+	uint64_t whole = 0; /* below 10^19 < 2^64 when it is used (REAL_EXACT_DIGITS) */
+	real mantissa, power;
+	int negative = *c == '-', digits = 0, scale = 0, exponent = 0, size;
 	int exponent_negative = 0;
 	if (FLT_EVAL_METHOD != 0)
 		return 0;
 	c += *c == '-' || *c == '+';
 	for (; *c >= '0' && *c <= '9'; c++, digits++)
-		mantissa = mantissa * REAL_C(10.0) + (real)(*c - '0');
+		whole = whole * 10u + (uint64_t)(*c - '0');
 	if (*c == '.')
 		for (c++; *c >= '0' && *c <= '9'; c++, digits++, scale++)
-			mantissa = mantissa * REAL_C(10.0) + (real)(*c - '0');
+			whole = whole * 10u + (uint64_t)(*c - '0');
 	if (digits == 0 || digits > REAL_EXACT_DIGITS)
 		return 0;
 	if (*c == 'e' || *c == 'E') {
@@ -74,8 +86,11 @@ static inline int real_from_short_decimal(const char *c, real *out)
 	scale -= exponent_negative ? -exponent : exponent; /* the value is mantissa / 10^scale */
 	if (scale > REAL_EXACT_POW10 || -scale > REAL_EXACT_POW10)
 		return 0;
-	for (i = 0; i < (scale < 0 ? -scale : scale); i++)
+	size = scale < 0 ? -scale : scale;
+	/* Long double's powers past 10^22: products of exact powers, each exact. */
+	for (power = exact_pow10[size < 22 ? size : 22]; size > 22; size--)
 		power *= REAL_C(10.0);
+	mantissa = (real)whole;
 	mantissa = scale < 0 ? mantissa * power : mantissa / power;
 	*out = negative ? -mantissa : mantissa;
 	return 1;
