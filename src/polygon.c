@@ -6,6 +6,7 @@
 
 #include "box.h"
 #include "clearance.h"
+#include "pages.h"
 
 vec2 polygon_project(vec3 p, int axis)
 {
@@ -123,33 +124,36 @@ static vec3 centroid_of(const vec3 *v, int count)
 	return vec_make(mean[0], mean[1], mean[2]);
 }
 
+#if POLYGON_DISCS || POLYGON_EDGES
+/* Certain answers away from the outline. The crossings test's answer is the exact one for
+ * the vertices as the ray's frame sees them (each edge's side decided exactly), and those
+ * differ from the exact projections by a few roundings of the coordinates' size S; so
+ * wherever the ray passes farther than some multiple of that from every projected edge,
+ * the test's answer is the exact geometry's: inside, or outside of a convex outline. A
+ * vector w in the polygon's plane is seen in the frame at least |w| |cos| / (2 sqrt 3)
+ * long (cos: of the angle between the ray and the normal; the frame scales by the
+ * direction's largest component, at least 1 / sqrt 3), so a point D from every edge in
+ * the plane is D |cos| / 4 from every projected edge. OUTLINE_ROUNDING S / |cos| in the
+ * plane covers the frame's roundings many times over, and the rounding of the hit point,
+ * of the plane's distance and of the distance's own computation, all a few roundings of
+ * S; a polygon whose vertices lie off its plane by `spread` has its outline seen up to
+ * 2 spread / |cos| away from where the plane's outline is. */
+#define OUTLINE_ROUNDING (REAL_C(1024.0) * REAL_EPSILON)
+
+/* How far from every edge a ray down the normal must meet the plane for the crossings
+ * test's answer to be certain, for coordinates of size `size` (over |cos| for other rays). */
+static real outline_margin(const polygon_shape *poly, real size)
+{
+	return poly->spread + poly->spread + OUTLINE_ROUNDING * size;
+}
+#endif
+
 #if POLYGON_DISCS
 /* A big polygon's disc: the hits of a ray that meets its plane well inside the disc about
  * the centroid that lies inside the outline are taken without the crossings test (a
  * 144-gon's test passes over nine runs and tests about 23 edges; at SPD gears' gear faces
  * more than half the tests the crossings test makes on big polygons are of such hits).
- *
- * Why it gives the crossings test's answer: that test's answer is the exact one for the
- * vertices as the ray's frame sees them (each edge's side decided exactly), and those
- * differ from the exact projections by a few roundings of the coordinates' size S; so
- * wherever the ray passes farther than some multiple of that from every projected edge,
- * both say inside. A vector w in the polygon's plane is seen in the frame at least
- * |w| |cos| / (2 sqrt 3) long (cos: of the angle between the ray and the normal; the
- * frame scales by the direction's largest component, at least 1 / sqrt 3), so a point
- * D from every edge in the plane is D |cos| / 4 from every projected edge. DISC_ROUNDING
- * S / |cos| in the plane covers the frame's roundings many times over, and the rounding
- * of the hit point, of the plane's distance and of the radius's own computation, all a
- * few roundings of S; a polygon whose vertices lie off its plane by `spread` has its
- * outline seen up to 2 spread / |cos| away from where the plane's outline is. Rays more
- * grazing than REACH_COS take the crossings test. */
-#define DISC_ROUNDING (REAL_C(1024.0) * REAL_EPSILON)
-
-/* How far inside every edge a ray down the normal must meet the plane for the crossings
- * test's answer to be certain, for coordinates of size `size` (over |cos| for other rays). */
-static real disc_margin(const polygon_shape *poly, real size)
-{
-	return poly->spread + poly->spread + DISC_ROUNDING * size;
-}
+ * Rays more grazing than REACH_COS take the crossings test. */
 
 /* Distance from p to the segment [a, b]. */
 static real segment_distance(vec3 p, vec3 a, vec3 b)
@@ -183,12 +187,51 @@ static void disc_init(scene *s, const polygon_shape *poly, vec3 centroid)
 	radius = (radius - poly->spread) * (REAL_C(1.0) - REAL_C(1.0) / 1024);
 	s->disc_centre[slot] = centroid;
 	s->disc_reach[slot] = reach;
-	s->disc_radius[slot] = radius > disc_margin(poly, size) &&
+	s->disc_radius[slot] = radius > outline_margin(poly, size) &&
 					       polygon_contains_ray(v, poly->count, &along)
 				       ? radius
 				       : REAL_C(0.0);
 }
 
+#endif
+
+#if POLYGON_EDGES
+/* A convex polygon's edge lines (polygon_edge_verdict): each edge's unit normal in the
+ * plane (the plane's normal times the edge, towards the inside for vertices that turn
+ * about the normal as Newell's normal does), through the edge's first vertex. The line of
+ * an edge whose ends lie off the plane is that of their projections onto it: the normal
+ * is square to both the plane's normal and the edge. Only when every other vertex lies
+ * strictly inside every edge's line: then the polygon goes once round a convex outline
+ * (a vertex repeated, or a second time round, would lie on a line; a turn the other way,
+ * a crossing or a dent, outside one), every point it holds is inside every line (up to
+ * the rounding of these checks), and a point inside all of them is inside it. Others
+ * get none (extent 0): the crossings test answers for them, as for polygons of more
+ * than RT_POLYGON_RUN vertices (whose runs and disc do more for them). */
+static void edges_init(scene *s, polygon_shape *poly)
+{
+	const vec3 *v = s->vertices + poly->first;
+	halfspace *e = s->edges + poly->first;
+	int count = poly->count, i, j;
+	real extent = REAL_C(0.0);
+	poly->extent = REAL_C(0.0);
+	if (count < 3 || count > RT_POLYGON_RUN)
+		return;
+	/* In bulk, as the vertices are (parse_shape.c): not a fault for each page. */
+	pages_ahead(s->edges, sizeof s->edges[0], (size_t)poly->first, (size_t)count,
+		    RT_MAX_VERTICES);
+	for (i = 0; i < count; i++) {
+		vec3 edge = vec_sub(v[i + 1 == count ? 0 : i + 1], v[i]);
+		e[i].normal = dir_normalize(vec_cross(dir_to_vec(poly->normal), edge));
+		e[i].offset = dir_dot_vec(e[i].normal, v[i]);
+		extent = real_max(extent, vec_max_abs(v[i]));
+	}
+	for (i = 0; i < count; i++)
+		for (j = 0; j < count; j++)
+			if (j != i && j != (i + 1 == count ? 0 : i + 1) &&
+			    !(dir_dot_vec(e[i].normal, v[j]) - e[i].offset > REAL_C(0.0)))
+				return;
+	poly->extent = extent;
+}
 #endif
 
 void polygon_init(scene *s, polygon_shape *poly, dir3 normal, int first, int count, int patch)
@@ -202,7 +245,7 @@ void polygon_init(scene *s, polygon_shape *poly, dir3 normal, int first, int cou
 	poly->first = first;
 	poly->count = count;
 	poly->spread = REAL_C(0.0);
-	for (i = 0; i < count && RT_USE_BVH; i++) {
+	for (i = 0; i < count && (RT_USE_BVH || POLYGON_EDGES); i++) {
 		real gap = real_fabs(plane_gap(normal, poly->offset, &s->vertices[first + i]));
 		poly->spread = real_max(poly->spread, gap);
 	}
@@ -233,6 +276,9 @@ void polygon_init(scene *s, polygon_shape *poly, dir3 normal, int first, int cou
 #if POLYGON_DISCS
 	if (count > RT_POLYGON_RUN)
 		disc_init(s, poly, centroid);
+#endif
+#if POLYGON_EDGES
+	edges_init(s, poly);
 #endif
 	if (!RT_SHAPE_PATCH)
 		return;
@@ -330,7 +376,7 @@ static int deep_inside(const scene *s, const polygon_shape *poly, const ray *r, 
 		return 0;
 	size = real_max(vec_max_abs(r->origin),
 			vec_max_abs(s->disc_centre[slot]) + s->disc_reach[slot]);
-	radius -= disc_margin(poly, size) / unit_to_real(unit_fabs(cosine));
+	radius -= outline_margin(poly, size) / unit_to_real(unit_fabs(cosine));
 	off = vec_sub(dir_madd(r->origin, t, r->dir), s->disc_centre[slot]);
 	return radius > 0 && vec_dot2(off, off) < real_mul2(radius, radius);
 }
@@ -338,6 +384,57 @@ static int deep_inside(const scene *s, const polygon_shape *poly, const ray *r, 
 /* Fixed point (and the MCU) keeps the crossings test for every hit. */
 #define deep_inside(s, poly, r, t, cosine) 0
 #endif
+
+#if POLYGON_EDGES
+/* polygon_edge_verdict, inlined into the polygon test. The distances in the plane times
+ * |cos| against the margin (over |cos|) times it: no division. A triangle's three lines
+ * straight through, its most common case (SPD teapot, tetra, mount). */
+RT_INLINE int edge_verdict(const scene *s, const polygon_shape *poly, const ray *r, real t,
+			   unit cosine)
+{
+	const halfspace *e = s->edges + poly->first;
+	real slant, margin;
+	vec3 p;
+	int i, inside = 1;
+	if (!(poly->extent > REAL_C(0.0)))
+		return -1;
+	slant = unit_to_real(unit_fabs(cosine));
+	margin = outline_margin(poly, real_max(vec_max_abs(r->origin), poly->extent));
+	p = dir_madd(r->origin, t, r->dir);
+	if (poly->count == 3) {
+		real d0 = real_mul(dir_dot_vec(e[0].normal, p) - e[0].offset, slant);
+		real d1 = real_mul(dir_dot_vec(e[1].normal, p) - e[1].offset, slant);
+		real d2 = real_mul(dir_dot_vec(e[2].normal, p) - e[2].offset, slant);
+		if (d0 < -margin || d1 < -margin || d2 < -margin)
+			return 0;
+		return d0 > margin && d1 > margin && d2 > margin ? 1 : -1;
+	}
+	for (i = 0; i < poly->count; i++) {
+		real d = real_mul(dir_dot_vec(e[i].normal, p) - e[i].offset, slant);
+		if (d < -margin)
+			return 0;
+		inside &= d > margin;
+	}
+	return inside ? 1 : -1;
+}
+#else
+RT_INLINE int edge_verdict(const scene *s, const polygon_shape *poly, const ray *r, real t,
+			   unit cosine)
+{
+	(void)s;
+	(void)poly;
+	(void)r;
+	(void)t;
+	(void)cosine;
+	return -1;
+}
+#endif
+
+int polygon_edge_verdict(const scene *s, const polygon_shape *poly, const ray *r, real t,
+			 unit cosine)
+{
+	return edge_verdict(s, poly, r, t, cosine);
+}
 
 /* ---- intersection --------------------------------------------------------------- */
 
@@ -347,6 +444,7 @@ int polygon_intersect(const scene *s, const object *o, const ray *r, real tmin, 
 	const polygon_shape *poly = &o->u.polygon;
 	unit denom = dir_dot(poly->normal, r->dir);
 	real t;
+	int verdict;
 
 	/* A ray parallel to the plane (or lying in it) misses (numerics.md G07, G08). */
 	if (denom == UNIT_C(0.0))
@@ -358,8 +456,10 @@ int polygon_intersect(const scene *s, const object *o, const ray *r, real tmin, 
 	t = real_div_unit(plane_gap(poly->normal, poly->offset, &r->origin), denom);
 	if (!(t > tmin && t < tmax))
 		return 0;
-	if (!deep_inside(s, poly, r, t, denom) &&
-	    !polygon_outline_crossed(s->vertices + poly->first, poly->count, r, s, poly->first))
+	verdict = edge_verdict(s, poly, r, t, denom);
+	if (verdict == 0 ||
+	    (verdict < 0 && !deep_inside(s, poly, r, t, denom) &&
+	     !polygon_outline_crossed(s->vertices + poly->first, poly->count, r, s, poly->first)))
 		return 0;
 	/* A grazing ray may meet the plane far off a non-planar polygon (see polygon_bounds):
 	 * a hit beyond the box is none. The MCU build, which has no hierarchy, leaves this

@@ -45,6 +45,11 @@ typedef struct {
 	real_reciprocal per_radius; /* for dividing by the radius (fixed point's normals) */
 } sphere_shape;
 
+/* Floating-point types decide most rays at a convex polygon by the hit point's distances
+ * from its edges' lines in its plane, without the crossings test (polygon.c); fixed point,
+ * whose images stay as they were, does not. */
+#define POLYGON_EDGES (!REAL_FIXED)
+
 /* A polygon's vertices are scene.vertices[first .. first+count); a patch's normals
  * are scene.normals at the same indices. `normal` and `offset` give its plane n.x = offset;
  * `spread` is how far the farthest vertex lies off that plane (0 when planar, up to
@@ -56,6 +61,9 @@ typedef struct {
 	real spread;
 	int first, count;
 	int axis;
+#if POLYGON_EDGES
+	real extent; /* its largest coordinate in magnitude; 0: no edge lines (convex ones) */
+#endif
 } polygon_shape;
 
 /* Base centre and radius, unit axis towards the apex end, its length and apex radius. */
@@ -144,6 +152,12 @@ typedef struct {
 	real disc_radius[RT_MAX_VERTICES / RT_POLYGON_RUN + 1];
 	real disc_reach[RT_MAX_VERTICES / RT_POLYGON_RUN + 1];
 #endif
+#endif
+#if POLYGON_EDGES
+	/* A convex polygon's edges as lines in its plane (polygon_init): for the edge from
+	 * pool vertex g to the next, the unit normal in the plane towards the inside and its
+	 * offset, in slot g. */
+	halfspace edges[RT_MAX_VERTICES];
 #endif
 } scene;
 

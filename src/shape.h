@@ -153,6 +153,13 @@ RT_APART real plane_gap(dir3 normal, real offset, const vec3 *origin);
  * test in the ray's frame (polygon.c): the same answer for an edge or vertex in every
  * polygon that shares it, so exactly one of a tiling's polygons is met. */
 int polygon_contains_ray(const vec3 *vertices, int count, const ray *r);
+/* Floating types: does the ray, which meets the plane of convex polygon `poly` at t
+ * (cosine: its direction's dot product with the normal), pass through it? 1 or 0 where
+ * the hit point lies farther than rounding can reach from every edge's line, else -1
+ * (the crossings test decides); always -1 in fixed point and for polygons of other
+ * shapes or of more than RT_POLYGON_RUN vertices (polygon.c). */
+int polygon_edge_verdict(const scene *s, const polygon_shape *poly, const ray *r, real t,
+			 unit cosine);
 /* The same, with the runs of s's vertex pool from `first` (the polygon's own) passed over
  * where none of their edges can count (RT_POLYGON_RUNS: a 144-gon's test a third as long). */
 int polygon_outline_crossed(const vec3 *vertices, int count, const ray *r, const scene *s,

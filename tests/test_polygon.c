@@ -45,6 +45,9 @@ static object polygon_object(int first, int count, vec3 normal, real offset, int
 	o.u.polygon.first = first;
 	o.u.polygon.count = count;
 	o.u.polygon.axis = axis;
+#if POLYGON_EDGES
+	o.u.polygon.extent = REAL_C(0.0); /* no edge lines: the crossings test answers */
+#endif
 	return o;
 }
 
@@ -783,6 +786,23 @@ static vec3 disc_shape_point(int shape, int i, int n)
 	return vec_make(test_real(radius * cos(angle)), test_real(radius * sin(angle)), test_real(z));
 }
 
+/* Where a test ray at `target` starts: at cosine c to `front` (a unit normal; c < 0 from
+ * behind), the rest along a random side, scale times a random [lo, hi) away. 0 when the
+ * side drawn lies too near the normal (the caller draws again). */
+static int ray_start(vec3 target, vec3 front, double c, double scale, double lo, double hi,
+		     vec3 *from)
+{
+	double spin = test_random_range(0.0, 6.283185307179586);
+	vec3 side = vec_make(test_real(cos(spin)), test_real(sin(spin)), test_real(cos(3 * spin)));
+	side = vec_sub(side, vec_scale(front, vec_dot(side, front)));
+	if (vec_max_abs(side) < REAL_C(0.01))
+		return 0;
+	side = vec_scale(side, test_real(sqrt(1.0 - c * c)) / vec_length(side));
+	*from = vec_add(target, vec_scale(vec_add(vec_scale(front, test_real(c)), side),
+					  test_real(scale * test_random_range(lo, hi))));
+	return 1;
+}
+
 /* Big polygons (more than RT_POLYGON_RUN vertices), whose hits deep inside floating
  * point takes from a disc about the centroid without the crossings test (polygon.c):
  * the shapes of disc_shape_point, tilted, and in floating point the circle again 2e5
@@ -826,8 +846,8 @@ static void test_discs(void)
 		double stored = ldexp(1.0, s.length_shift), size = scale[which] * stored;
 		vec3 centre = vec_make(test_real(far[which] * stored), test_real(far[which] * stored),
 				       test_real(-far[which] * stored));
-		vec3 front = dir_to_vec(o->u.polygon.normal), target, side, from;
-		double c = test_random_range(0.26, 1.0), spin;
+		vec3 front = dir_to_vec(o->u.polygon.normal), target, from;
+		double c = test_random_range(0.26, 1.0);
 		/* A point on the tilted polygon's plane at radius `reach` and a random angle
 		 * (random points in the square, the circle's edge, well inside), or a vertex. */
 		double angle = test_random_range(0.0, 6.283185307179586), reach;
@@ -842,21 +862,37 @@ static void test_discs(void)
 		}
 		deep += how == 2 && reach < 0.4 && c > 0.5 && (which == 0 || which == 4);
 		/* From in front: cos c to the normal, the rest along a random side. */
-		spin = test_random_range(0.0, 6.283185307179586);
-		side = vec_make(test_real(cos(spin)), test_real(sin(spin)), test_real(cos(3 * spin)));
-		side = vec_sub(side, vec_scale(front, vec_dot(side, front)));
-		if (vec_max_abs(side) < REAL_C(0.01))
+		if (!ray_start(target, front, c, size * (which == 4 ? 1000.0 : 1.0), 2.0, 40.0, &from))
 			continue;
-		side = vec_scale(side, test_real(sqrt(1.0 - c * c)) / vec_length(side));
-		from = vec_add(target, vec_scale(vec_add(vec_scale(front, test_real(c)), side),
-						test_real(size * test_random_range(2.0, 40.0) *
-							  (which == 4 ? 1000.0 : 1.0))));
 		tally_ray(&tally, o, from, target);
 	}
 	CHECK(tally.rays > 55000);
 	CHECK(tally.inside > tally.rays / 4 && tally.inside < tally.rays * 3 / 4);
 	CHECK(deep > 1000); /* rays the disc answers (floating point), well inside */
 	CHECK_INT(tally.disagree, 0);
+}
+
+/* A random rotation, from a random unit quaternion: its first two rows (unit vectors at
+ * right angles) and the third (their cross product). */
+static void random_rotation(double axis[3][3])
+{
+	double q[4], n2 = 0.0;
+	int k;
+	for (k = 0; k < 4; k++) {
+		q[k] = test_random_range(-1.0, 1.0);
+		n2 += q[k] * q[k];
+	}
+	for (k = 0; k < 4; k++)
+		q[k] /= sqrt(n2);
+	axis[0][0] = 1 - 2 * (q[2] * q[2] + q[3] * q[3]);
+	axis[0][1] = 2 * (q[1] * q[2] + q[0] * q[3]);
+	axis[0][2] = 2 * (q[1] * q[3] - q[0] * q[2]);
+	axis[1][0] = 2 * (q[1] * q[2] - q[0] * q[3]);
+	axis[1][1] = 1 - 2 * (q[1] * q[1] + q[3] * q[3]);
+	axis[1][2] = 2 * (q[2] * q[3] + q[0] * q[1]);
+	axis[2][0] = axis[0][1] * axis[1][2] - axis[0][2] * axis[1][1];
+	axis[2][1] = axis[0][2] * axis[1][0] - axis[0][0] * axis[1][2];
+	axis[2][2] = axis[0][0] * axis[1][1] - axis[0][1] * axis[1][0];
 }
 
 /* A tiny polygon (1e-4 across, in floating point) with a slit from its rim that ends
@@ -879,24 +915,11 @@ static void test_disc_slit(void)
 		return; /* no discs, and 1e-4 is below Q16.16's reach */
 	test_seed(18);
 	for (turn = 0; turn < 40; turn++) {
-		double axis[3][3], sum = 0.0, end, q[4], n2 = 0.0, pts[42][2];
+		double axis[3][3], sum = 0.0, end, pts[42][2];
 		size_t at;
-		int k;
 		const object *o;
 		vec3 centre = vec_make(REAL_C(0.0), REAL_C(0.0), REAL_C(0.0));
-		/* A random rotation from a random unit quaternion. */
-		for (k = 0; k < 4; k++) {
-			q[k] = test_random_range(-1.0, 1.0);
-			n2 += q[k] * q[k];
-		}
-		for (k = 0; k < 4; k++)
-			q[k] /= sqrt(n2);
-		axis[0][0] = 1 - 2 * (q[2] * q[2] + q[3] * q[3]);
-		axis[0][1] = 2 * (q[1] * q[2] + q[0] * q[3]);
-		axis[0][2] = 2 * (q[1] * q[3] - q[0] * q[2]);
-		axis[1][0] = 2 * (q[1] * q[2] - q[0] * q[3]);
-		axis[1][1] = 1 - 2 * (q[1] * q[1] + q[3] * q[3]);
-		axis[1][2] = 2 * (q[2] * q[3] + q[0] * q[1]);
+		random_rotation(axis);
 		/* The rim from angle 0.05 round to -0.05, then the slit's end at x = end, its
 		 * walls gap / size from the axis: end puts the vertices' mean gap / size
 		 * before it. */
@@ -944,6 +967,198 @@ static void test_disc_slit(void)
 	CHECK_INT(at_centroid.disagree, 0);
 }
 
+/* Whether the build gave the polygon edge lines (polygon_init). */
+static int has_edge_lines(const polygon_shape *poly)
+{
+#if POLYGON_EDGES
+	return poly->extent > REAL_C(0.0);
+#else
+	(void)poly;
+	return 0;
+#endif
+}
+
+/* The outlines of test_edge_lines in their own plane (u, v), w off it; returns the vertex
+ * count. Kinds 0-3 are convex and go once round (a triangle, a needle, a convex polygon
+ * of 4-16 vertices on an ellipse, either way round, a quad with a corner off the plane);
+ * 4-7 are not (a dart, a bow-tie, a pentagon twice round, a square with a vertex
+ * repeated) and must get no edge lines. */
+static int edge_test_outline(int kind, double uvw[16][3])
+{
+	int n, i;
+	memset(uvw, 0, 16 * sizeof uvw[0]);
+	if (kind <= 1) {
+		for (i = 0; i < 3; i++) {
+			uvw[i][0] = test_random_range(-1.0, 1.0);
+			uvw[i][1] = test_random_range(-1.0, 1.0);
+		}
+		if (kind == 1) { /* the third vertex just off the first two's line */
+			double f = test_random_range(0.1, 0.9), off = pow(10.0, -test_random_range(3.0, 6.0));
+			uvw[2][0] = uvw[0][0] + f * (uvw[1][0] - uvw[0][0]) - off * (uvw[1][1] - uvw[0][1]);
+			uvw[2][1] = uvw[0][1] + f * (uvw[1][1] - uvw[0][1]) + off * (uvw[1][0] - uvw[0][0]);
+		}
+		return 3;
+	}
+	if (kind == 2 || kind == 3) {
+		double a = test_random_range(0.3, 1.0), b = test_random_range(0.3, 1.0), sense;
+		double angle[16];
+		n = kind == 3 ? 4 : 4 + (int)test_random_range(0.0, 12.99);
+		sense = test_random() < 0.5 ? 1.0 : -1.0;
+		for (i = 0; i < n; i++) /* sorted angles: a convex outline */
+			angle[i] = 6.283185307179586 * (i + test_random_range(0.05, 0.95)) / n;
+		for (i = 0; i < n; i++) {
+			uvw[i][0] = a * cos(sense * angle[i]);
+			uvw[i][1] = b * sin(sense * angle[i]);
+		}
+		if (kind == 3)
+			uvw[2][2] = test_random_range(-0.01, 0.01);
+		return n;
+	}
+	if (kind == 4 || kind == 5) {
+		static const double dart[4][2] = {{0, 0}, {1, 0.4}, {0.3, 0}, {1, -0.4}};
+		static const double bow[4][2] = {{0, 0}, {1, 1}, {1, 0}, {0, 1}};
+		for (i = 0; i < 4; i++) {
+			uvw[i][0] = kind == 4 ? dart[i][0] : bow[i][0];
+			uvw[i][1] = kind == 4 ? dart[i][1] : bow[i][1];
+		}
+		return 4;
+	}
+	n = kind == 6 ? 10 : 5;
+	for (i = 0; i < n; i++) {
+		int k = kind == 6 ? i % 5 : i == 4 ? 3 : i;
+		double angle = kind == 6 ? 1.2566370614359172 * k : 1.5707963267948966 * k;
+		uvw[i][0] = cos(angle);
+		uvw[i][1] = sin(angle);
+	}
+	return n;
+}
+
+/* Convex polygons, floating point: a ray the hit point's distances from the edges' lines
+ * decide (polygon_edge_verdict) is decided as the crossings test decides it. 480
+ * polygons of the kinds of edge_test_outline, turned at random, 10^-3 to 10^3 across and
+ * up to 10^4 of their size from the origin (fixed point: 1 to 100, near it), each met by
+ * 250 rays from either side at every angle down to 1/1000 of a right angle's cosine, at
+ * random points, at vertices and at points of an edge moved off it by 10^-15 to 10^-2 of
+ * the size (where the lines cannot decide, and the crossings test must). Fixed point has
+ * no edge lines: every verdict is -1. */
+static void test_edge_lines(void)
+{
+	static char text[1 << 19];
+	const int polygons = 480, rays = 250;
+	size_t at;
+	int i, k, decided = 0, undecided = 0, wrong = 0, inside = 0, disagree = 0, total = 0;
+	int lined[8] = {0}, open_rays = 0, open_decided = 0;
+	double sizes[480];
+	test_seed(19);
+	at = (size_t)snprintf(text, sizeof text,
+			      "v\nfrom 0 0 10\nat 0 0 0\nup 0 1 0\nangle 30\nhither 1\n"
+			      "resolution 8 8\nl 0 0 10\nf 1 1 1 1 0 0 0 1\n");
+	for (i = 0; i < polygons; i++) {
+		double uvw[16][3], axis[3][3], size, far[3];
+		int n = edge_test_outline(i % 8, uvw), m;
+		random_rotation(axis);
+		size = REAL_FIXED ? test_random_range(1.0, 100.0) : pow(10.0, test_random_range(-3.0, 3.0));
+		for (k = 0; k < 3; k++)
+			far[k] = REAL_FIXED ? test_random_range(-50.0, 50.0)
+					    : size * test_random_range(-1e4, 1e4) * (i % 3 == 0);
+		sizes[i] = size;
+		m = snprintf(text + at, sizeof text - at, "p %d\n", n);
+		at = m > 0 ? at + (size_t)m : at;
+		for (k = 0; k < n && at < sizeof text; k++) {
+			double p[3];
+			int c;
+			for (c = 0; c < 3; c++)
+				p[c] = far[c] + size * (uvw[k][0] * axis[0][c] + uvw[k][1] * axis[1][c] +
+							uvw[k][2] * axis[2][c]);
+			m = snprintf(text + at, sizeof text - at, "%.17g %.17g %.17g\n", p[0], p[1], p[2]);
+			at = m > 0 ? at + (size_t)m : at;
+		}
+	}
+	if (!CHECK(at < sizeof text) || !CHECK(test_parse_buffer(&s, "edges.nff", text, NULL, NULL)))
+		return;
+	CHECK_INT(s.object_count, polygons);
+	for (i = 0; i < polygons && i < s.object_count; i++) {
+		const object *o = &s.objects[i];
+		const polygon_shape *poly = &o->u.polygon;
+		const vec3 *v = s.vertices + poly->first;
+		double size = sizes[i] * ldexp(1.0, s.length_shift);
+		vec3 front = dir_to_vec(poly->normal);
+		lined[i % 8] += has_edge_lines(poly);
+		for (k = 0; k < rays; k++) {
+			int how = k % 3, a = (int)test_random_range(0.0, poly->count - 0.01), verdict, plain;
+			int b = a + 1 == poly->count ? 0 : a + 1;
+			double c = pow(10.0, -test_random_range(0.0, 3.0)), off;
+			vec3 target, across, from;
+			unit denom;
+			real t;
+			ray r;
+			if (how == 0) {
+				double f = test_random_range(0.0, 1.0);
+				int d = (a + 2) % poly->count;
+				target = vec_add(vec_scale(v[a], test_real(1.0 - f)), vec_scale(v[d], test_real(f)));
+				target = vec_add(target, vec_scale(vec_sub(v[b], v[a]),
+								   test_real(test_random_range(-0.5, 0.5))));
+			} else if (how == 1) {
+				target = v[a];
+			} else {
+				/* A point of edge (a, b) moved across it in the plane. */
+				double f = test_random_range(0.0, 1.0);
+				target = vec_add(vec_scale(v[a], test_real(1.0 - f)), vec_scale(v[b], test_real(f)));
+				across = vec_cross(front, vec_sub(v[b], v[a]));
+				if (!(vec_length(across) > REAL_C(0.0)))
+					continue;
+				off = size * pow(10.0, -test_random_range(2.0, 15.0)) *
+				      (test_random() < 0.5 ? -1.0 : 1.0);
+				target = vec_add(target, vec_scale(across, test_real(off) / vec_length(across)));
+			}
+			if (!ray_start(target, front, k % 2 ? c : -c, size, 0.5, 100.0, &from))
+				continue;
+			r = test_ray(from, vec_sub(target, from));
+			denom = dir_dot(poly->normal, r.dir);
+			if (denom == UNIT_C(0.0))
+				continue;
+			t = real_div_unit(plane_gap(poly->normal, poly->offset, &r.origin), denom);
+			if (!(t > REAL_C(0.0)))
+				continue;
+			plain = polygon_contains_ray(v, poly->count, &r);
+			verdict = polygon_edge_verdict(&s, poly, &r, t, denom);
+			total++;
+			inside += plain;
+			decided += verdict >= 0;
+			undecided += verdict < 0 && has_edge_lines(poly);
+			wrong += verdict >= 0 && verdict != plain;
+			/* Rays at random points of a lined polygon's plane, mostly far from its
+			 * edges: the lines decide most (not near a needle's, nor within the
+			 * bent quad's spread of its edges). */
+			open_rays += how == 0 && has_edge_lines(poly);
+			open_decided += how == 0 && verdict >= 0;
+			/* The whole test, where no grazing box check can step in (polygon.c). */
+			if (unit_fabs(denom) >= UNIT_C(0.25))
+				disagree += polygon_intersect(&s, o, &r, REAL_C(0.0), REAL_MAX, NULL) != plain;
+		}
+	}
+	CHECK(total > polygons * rays * 9 / 10);
+	CHECK(inside > total / 5 && inside < total * 4 / 5);
+	CHECK_INT(wrong, 0);
+	CHECK_INT(disagree, 0);
+	if (REAL_FIXED) {
+		CHECK_INT(decided, 0);
+		return;
+	}
+	/* Float's margin, 1024 of its roundings of the coordinates' size, is as wide as a
+	 * polygon 10^4 of its size from the origin, and its needles are too thin for it to
+	 * tell their third vertex from the line of the others: it decides far fewer. */
+	for (k = 0; k < 8; k++) /* 60 of each kind: the convex ones lined, the others not */
+		CHECK_INT(lined[k], k >= 4 ? 0 : k == 1 && REAL_EPSILON > REAL_C(1e-10) ? lined[k] : 60);
+	CHECK(lined[1] >= 30);
+	CHECK(open_rays > 15000);
+	if (REAL_EPSILON > REAL_C(1e-10))
+		CHECK(open_decided > open_rays / 10);
+	else
+		CHECK(open_decided > open_rays * 8 / 10);
+	CHECK(undecided > 100); /* rays the crossings test had to decide, at the edges */
+}
+
 void suite_polygon(void)
 {
 	scene_init(&s, "polygon");
@@ -959,4 +1174,5 @@ void suite_polygon(void)
 	test_triangles();
 	test_discs();
 	test_disc_slit();
+	test_edge_lines();
 }
