@@ -80,7 +80,7 @@ include mk/variants.mk mk/mcu.mk mk/dev.mk
 test: rt build/unit-tests build/san/rt build/san/unit-tests build/san/replay build/san/replay-fixed \
       build/unit-tests-float build/unit-tests-ref build/unit-tests-scalar build/unit-tests-sse \
       build/unit-tests-fixed build/san/unit-tests-fixed build/rt-fixed build/rt-ref \
-      build/rt-float build/rt-small build/rt-limits $(MSAN_TEST) $(MCU_TEST)
+      build/rt-float build/rt-small build/rt-limits build/rt-no-tree $(MSAN_TEST) $(MCU_TEST)
 	@sh tests/run.sh
 
 install: rt

@@ -20,6 +20,9 @@ VARIANT_FLAGS_limits = -DRT_REAL_DOUBLE -DRT_MAX_OBJECTS=16384 -DRT_MAX_VERTICES
 # four at a time with SSE, as on processors without AVX.
 VARIANT_FLAGS_scalar = -DRT_REAL_DOUBLE -DRT_NO_SIMD=1
 VARIANT_FLAGS_sse = -DRT_REAL_DOUBLE -DRT_NO_AVX=1
+# No hierarchy, but the checks the build with one makes (config.h): every object tested
+# for every ray, to compare with the tree's search (tests/tree.sh).
+VARIANT_FLAGS_no-tree = -DRT_REAL_DOUBLE -DRT_USE_BVH=0 -DRT_HOST_CHECKS=1
 VARIANT_FLAGS_sphere-textbook = -DRT_REAL_DOUBLE -DRT_NAIVE=RT_NAIVE_SPHERE
 VARIANT_FLAGS_hedron-per-face = -DRT_REAL_DOUBLE -DRT_NAIVE=RT_NAIVE_HEDRON
 VARIANT_FLAGS_offset-fixed = -DRT_REAL_DOUBLE -DRT_NAIVE=RT_NAIVE_OFFSET

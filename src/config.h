@@ -126,6 +126,16 @@
 #ifndef RT_USE_BVH
 #define RT_USE_BVH 1 /* bounding volume hierarchy for large scenes; 0 leaves it out */
 #endif
+/* Three checks the build with the hierarchy makes and the MCU's, which has none, leaves
+ * out for flash (docs/mcu.md): a grazing ray's hit beyond a polygon's box is none
+ * (polygon.c), a polyhedron's entry at the very distance of the nearest hit so far is
+ * no nearer hit (hedron.c), and each image line forgets the shadow rays' remembered
+ * blockers (trace.c). A host build without the hierarchy keeps them with
+ * -DRT_HOST_CHECKS=1, and then searches object by object exactly as the tree does
+ * (build/rt-no-tree, tests/tree.sh). */
+#ifndef RT_HOST_CHECKS
+#define RT_HOST_CHECKS RT_USE_BVH
+#endif
 #ifndef RT_BVH_MIN_OBJECTS
 #define RT_BVH_MIN_OBJECTS 12 /* scenes with fewer objects test them all: cheaper */
 #endif

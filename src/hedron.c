@@ -162,7 +162,7 @@ int hedron_intersect(const scene *s, const object *o, const ray *r, real tmin, r
 	 * distance of the nearest so far to the object found first, as the hierarchy's tie
 	 * rule needs; the MCU build, which has no hierarchy, leaves the test out for flash
 	 * (docs/mcu.md). */
-	if (near_face >= 0 && tnear > tmin && (!RT_USE_BVH || tnear < tmax)) {
+	if (near_face >= 0 && tnear > tmin && (!RT_HOST_CHECKS || tnear < tmax)) {
 		t = tnear;
 		face = near_face;
 	} else if (far_face >= 0 && tfar > tmin && !(tnear > tfar)) {

@@ -245,7 +245,7 @@ void polygon_init(scene *s, polygon_shape *poly, dir3 normal, int first, int cou
 	poly->first = first;
 	poly->count = count;
 	poly->spread = REAL_C(0.0);
-	for (i = 0; i < count && (RT_USE_BVH || POLYGON_EDGES); i++) {
+	for (i = 0; i < count && (RT_HOST_CHECKS || POLYGON_EDGES); i++) {
 		real gap = real_fabs(plane_gap(normal, poly->offset, &s->vertices[first + i]));
 		poly->spread = real_max(poly->spread, gap);
 	}
@@ -464,7 +464,7 @@ int polygon_intersect(const scene *s, const object *o, const ray *r, real tmin, 
 	/* A grazing ray may meet the plane far off a non-planar polygon (see polygon_bounds):
 	 * a hit beyond the box is none. The MCU build, which has no hierarchy, leaves this
 	 * out for flash (docs/mcu.md). */
-	if (RT_USE_BVH && unit_fabs(denom) < REACH_COS &&
+	if (RT_HOST_CHECKS && unit_fabs(denom) < REACH_COS &&
 	    !reaches(s, poly, dir_madd(r->origin, t, r->dir)))
 		return 0;
 	if (h) {

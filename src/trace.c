@@ -393,7 +393,7 @@ void trace_eye_line(tracer *t, dir3 n)
 	 * tested alone, and a test that reports a hit outside the object's box (Q16.16 on
 	 * a scene at the edge of its range) would shadow what the hierarchy, which skips
 	 * that box, lights. Without a hierarchy (the MCU) every object is tested anyway. */
-	if (RT_USE_BVH) {
+	if (RT_HOST_CHECKS) {
 		int i;
 		for (i = 0; i < RT_MAX_DEPTH * RT_MAX_LIGHTS; i++)
 			t->last_blocker[i / RT_MAX_LIGHTS][i % RT_MAX_LIGHTS] = -1;

@@ -72,6 +72,9 @@ else
 	echo "msan: skipped (no clang; MemorySanitizer needs it)"
 fi
 tally watertight "$(sh tests/watertight.sh 2>&1)"
+# The tree's search against the search object by object (no sanitizer: it is the answers
+# that are compared, and the sanitized builds run the same scenes above).
+tally tree "$(RT=./rt sh tests/tree.sh 2>&1)"
 if command -v arm-none-eabi-gcc >/dev/null 2>&1; then
 	tally mcu "$(sh tests/mcu.sh 2>&1)"
 else
