@@ -245,7 +245,7 @@ void polygon_init(scene *s, polygon_shape *poly, dir3 normal, int first, int cou
 	poly->first = first;
 	poly->count = count;
 	poly->spread = REAL_C(0.0);
-	for (i = 0; i < count && (RT_HOST_CHECKS || POLYGON_EDGES); i++) {
+	for (i = 0; i < count && (RT_USE_BVH || RT_HOST_CHECKS || POLYGON_EDGES); i++) {
 		real gap = real_fabs(plane_gap(normal, poly->offset, &s->vertices[first + i]));
 		poly->spread = real_max(poly->spread, gap);
 	}

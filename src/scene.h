@@ -62,7 +62,7 @@ typedef struct {
 	int first, count;
 	int axis;
 #if POLYGON_EDGES
-	real extent; /* its largest coordinate in magnitude; 0: no edge lines (convex ones) */
+	real extent; /* largest coordinate in magnitude; 0: no edge lines (only convex get them) */
 #endif
 } polygon_shape;
 

@@ -392,7 +392,8 @@ void trace_eye_line(tracer *t, dir3 n)
 	 * lines a process traced before it (-j, --rows, -a's rows): a remembered blocker is
 	 * tested alone, and a test that reports a hit outside the object's box (Q16.16 on
 	 * a scene at the edge of its range) would shadow what the hierarchy, which skips
-	 * that box, lights. Without a hierarchy (the MCU) every object is tested anyway. */
+	 * that box, lights. Without the host's checks (the MCU, which has no hierarchy)
+	 * every object is tested anyway. */
 	if (RT_HOST_CHECKS) {
 		int i;
 		for (i = 0; i < RT_MAX_DEPTH * RT_MAX_LIGHTS; i++)

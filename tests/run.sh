@@ -4,7 +4,8 @@
 #   unit tests (normal and ASan+UBSan builds), command-line tests, golden renders, the
 #   malformed and unusual scenes of tests/bad and tests/good (bad.sh), fixed point against
 #   the reference (fixed.sh) and the hard scenes against the visibility oracle in every
-#   number type (watertight.sh), and the documentation against the program (docs.sh).
+#   number type (watertight.sh), the documentation against the program (docs.sh), and
+#   the tree's search against the search object by object (tree.sh).
 cd "$(dirname "$0")/.." || exit 1
 . tests/lib.sh
 

@@ -797,7 +797,8 @@ static int ray_start(vec3 target, vec3 front, double c, double scale, double lo,
 	side = vec_sub(side, vec_scale(front, vec_dot(side, front)));
 	if (vec_max_abs(side) < REAL_C(0.01))
 		return 0;
-	side = vec_scale(side, test_real(sqrt(1.0 - c * c)) / vec_length(side));
+	/* real_div: in Q16.16 a plain / of two reals divides their raw integers. */
+	side = vec_scale(side, real_div(test_real(sqrt(1.0 - c * c)), vec_length(side)));
 	*from = vec_add(target, vec_scale(vec_add(vec_scale(front, test_real(c)), side),
 					  test_real(scale * test_random_range(lo, hi))));
 	return 1;
@@ -1063,7 +1064,7 @@ static void test_edge_lines(void)
 					    : size * test_random_range(-1e4, 1e4) * (i % 3 == 0);
 		sizes[i] = size;
 		m = snprintf(text + at, sizeof text - at, "p %d\n", n);
-		at = m > 0 ? at + (size_t)m : at;
+		at = m > 0 && (size_t)m < sizeof text - at ? at + (size_t)m : sizeof text;
 		for (k = 0; k < n && at < sizeof text; k++) {
 			double p[3];
 			int c;
@@ -1071,7 +1072,8 @@ static void test_edge_lines(void)
 				p[c] = far[c] + size * (uvw[k][0] * axis[0][c] + uvw[k][1] * axis[1][c] +
 							uvw[k][2] * axis[2][c]);
 			m = snprintf(text + at, sizeof text - at, "%.17g %.17g %.17g\n", p[0], p[1], p[2]);
-			at = m > 0 ? at + (size_t)m : at;
+			/* Past the end (truncated): at stays there, and nothing more is written. */
+			at = m > 0 && (size_t)m < sizeof text - at ? at + (size_t)m : sizeof text;
 		}
 	}
 	if (!CHECK(at < sizeof text) || !CHECK(test_parse_buffer(&s, "edges.nff", text, NULL, NULL)))
@@ -1109,9 +1111,12 @@ static void test_edge_lines(void)
 					continue;
 				off = size * pow(10.0, -test_random_range(2.0, 15.0)) *
 				      (test_random() < 0.5 ? -1.0 : 1.0);
-				target = vec_add(target, vec_scale(across, test_real(off) / vec_length(across)));
+				target = vec_add(target,
+						 vec_scale(across, real_div(test_real(off), vec_length(across))));
 			}
-			if (!ray_start(target, front, k % 2 ? c : -c, size, 0.5, 100.0, &from))
+			/* Q16.16: near enough that the distance stays in its range. */
+			if (!ray_start(target, front, k % 2 ? c : -c, size, 0.5, REAL_FIXED ? 4.0 : 100.0,
+				       &from))
 				continue;
 			r = test_ray(from, vec_sub(target, from));
 			denom = dir_dot(poly->normal, r.dir);
