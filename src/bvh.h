@@ -126,6 +126,26 @@ int bvh_piece_bounds(const scene *s, int index, int piece, int pieces, vec3 *lo,
  * [lo, hi] (bvh_pieces.c). */
 real bvh_box_pad(vec3 lo, vec3 hi);
 
+/* A box corner as the nodes keep it: rounded outwards (up for the upper corner) where
+ * that is to float, else as it is. */
+static inline bvh_point bvh_round_corner(vec3 v, int up)
+{
+#if BVH_WIDE
+	bvh_point p;
+	p.x = float_outward(v.x, up);
+	p.y = float_outward(v.y, up);
+	p.z = float_outward(v.z, up);
+	return p;
+#else
+	(void)up;
+	return v;
+#endif
+}
+
+/* Object `index`'s whole box, padded and rounded as the tree's boxes of it (each of its
+ * pieces lies within it); 0 for an object without finite bounds. */
+int bvh_object_box(const scene *s, int index, bvh_point *lo, bvh_point *hi);
+
 /* Nearest hit along r over (0, tmax), through the hierarchy (and the unbounded objects),
  * leaving out object `skip` (-1 for none; see object_can_rehit); fills h (normals not yet
  * faced to the ray) and h->object. */

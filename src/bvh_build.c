@@ -15,21 +15,6 @@
 
 RT_STATIC_ASSERT(node_count_fits, 2 * (long)RT_MAX_OBJECTS < 2147483647L);
 
-/* A box corner as the node keeps it: rounded outwards (up for the upper corner) where
- * that is to float, else as it is. */
-static bvh_point corner_outward(vec3 v, int up)
-{
-#if BVH_WIDE
-	bvh_point p;
-	p.x = float_outward(v.x, up);
-	p.y = float_outward(v.y, up);
-	p.z = float_outward(v.z, up);
-	return p;
-#else
-	(void)up;
-	return v;
-#endif
-}
 
 /* A corner back as reals (exact: a float is a real in every floating type). */
 static inline vec3 point_vec(bvh_point p)
@@ -456,8 +441,8 @@ static void wide_fill(bvh_tree *t, int w, const int *lane, int n)
 static void item_make(int at, int index, vec3 lo, vec3 hi, real pad)
 {
 	vec3 p = vec_make(pad, pad, pad);
-	items[at].lo = corner_outward(vec_sub(lo, p), 0);
-	items[at].hi = corner_outward(vec_add(hi, p), 1);
+	items[at].lo = bvh_round_corner(vec_sub(lo, p), 0);
+	items[at].hi = bvh_round_corner(vec_add(hi, p), 1);
 	items[at].object = index;
 }
 

@@ -74,3 +74,16 @@ real bvh_box_pad(vec3 lo, vec3 hi)
 	return real_surface_offset(real_max(REAL_C(1.0), real_max(vec_max_abs(lo), vec_max_abs(hi))),
 				   1);
 }
+
+int bvh_object_box(const scene *s, int index, bvh_point *lo, bvh_point *hi)
+{
+	vec3 l, h, p;
+	real pad;
+	if (!(shape_bounds(s, &s->objects[index], &l, &h) && vec_is_finite(l) && vec_is_finite(h)))
+		return 0;
+	pad = bvh_box_pad(l, h);
+	p = vec_make(pad, pad, pad);
+	*lo = bvh_round_corner(vec_sub(l, p), 0);
+	*hi = bvh_round_corner(vec_add(h, p), 1);
+	return 1;
+}

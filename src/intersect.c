@@ -114,6 +114,9 @@ const accel *accel_build(const scene *s)
 	static accel the_accel; /* large: a tree of 2 RT_MAX_OBJECTS nodes */
 	the_accel.scene = s;
 	bvh_build(&the_accel.tree, s);
+#if INSIDE_LISTS
+	inside_build(&the_accel.inside, s, &the_accel.tree);
+#endif
 	return &the_accel;
 }
 #endif
@@ -151,6 +154,20 @@ int scene_intersect_from(const accel *a, const ray *r, const origin_terms *k, in
 	}
 	return found;
 }
+
+#if INSIDE_LISTS
+int scene_intersect_inside(const accel *a, const ray *r, int solid, int skip, real tmax, hit *h)
+{
+	const scene *s = accel_scene(a);
+	int found;
+	if (solid < 0 || !a->tree.node_count ||
+	    !inside_nearest(&a->inside, s, &a->tree, solid, r, skip, tmax, h, &found))
+		return scene_intersect_from(a, r, NULL, skip, tmax, h);
+	face_forward(r, h);
+	h->rough = (int)shape_is(SHAPE_ROUGH, s->objects[h->object].kind);
+	return found;
+}
+#endif
 
 real scene_transmittance(const accel *a, const ray *r, real tmax, int skip, int *blocker)
 {

@@ -7,6 +7,7 @@
 #include <stdint.h>
 
 #include "bvh.h"
+#include "inside.h"
 #include "shape.h"
 
 /* What the queries below search: the scene, and where the build has one its BVH, built
@@ -16,6 +17,9 @@
 typedef struct {
 	const scene *scene;
 	bvh_tree tree;
+#if INSIDE_LISTS
+	inside_lists inside; /* the objects rays inside each transmitting solid can meet */
+#endif
 } accel;
 #define accel_scene(a) ((a)->scene)
 #define accel_tree(a) ((a)->tree.node_count ? &(a)->tree : NULL) /* NULL: search each object */
@@ -79,5 +83,11 @@ int scene_intersect_from(const accel *a, const ray *r, const origin_terms *k, in
  * `skip` (as scene_intersect_from). *blocker (if not NULL) gets the opaque blocker's
  * index, or -1. */
 real scene_transmittance(const accel *a, const ray *r, real tmax, int skip, int *blocker);
+
+#if INSIDE_LISTS
+/* scene_intersect_from without origin terms for a ray that starts inside object `solid`
+ * (-1: not known to), through the solid's list where it has one (inside.h). */
+int scene_intersect_inside(const accel *a, const ray *r, int solid, int skip, real tmax, hit *h);
+#endif
 
 #endif

@@ -42,6 +42,9 @@ void trace_init(tracer *t, const accel *a, int depth, real cutoff)
 	for (i = 0; i < RT_MAX_DEPTH * RT_MAX_LIGHTS; i++)
 		t->last_blocker[i / RT_MAX_LIGHTS][i % RT_MAX_LIGHTS] = -1;
 	origin_terms_init(s, s->camera.from, &t->eye);
+#if INSIDE_LISTS
+	t->inside = -1;
+#endif
 	for (i = 0; i < s->material_count; i++)
 		t->ambient[i] = bounded(vec_mul(s->ambient, s->materials[i].color));
 	/* The eye may sit inside glass: find the closed transmitting objects around it by
@@ -284,6 +287,10 @@ static vec3 trace_mirror(tracer *t, departure *from, dir3 dir, int level, real w
 	next.origin = departure_point(from);
 	next.dir = dir;
 	t->stats.reflect_rays++;
+#if INSIDE_LISTS
+	/* A solid's own rays leave it from inside (object_can_rehit): it is around them. */
+	t->inside = from->skip < 0 ? from->h->object : -1;
+#endif
 	return vec_scale(trace_ray(t, &next, from->skip, level + 1, real_mul(weight, ks), m, NULL),
 			 ks);
 }
@@ -310,6 +317,10 @@ static vec3 trace_refraction(tracer *t, const ray *r, departure *from, const mat
 	next.origin = trace_offset(h, dir_neg(h->normal));
 	next.dir = dir;
 	t->stats.refract_rays++;
+#if INSIDE_LISTS
+	/* Entering through the front, the ray is inside the object. */
+	t->inside = h->front ? h->object : -1;
+#endif
 	return vec_scale(vec_mul(mat->color,
 				 trace_ray(t, &next, -1, level + 1, real_mul(weight, mat->kt),
 					   &next_media, NULL)),
@@ -334,7 +345,15 @@ static vec3 trace_ray(tracer *t, const ray *r, int skip, int level, real weight,
 	 * point can be computed in every type. */
 	/* Eye rays (level 1) take the terms that depend on their origin from the table made
 	 * once for the frame, and the objects their image line can meet from it. */
+#if INSIDE_LISTS
+	int inside = t->inside;
+	t->inside = -1;
+	if (!(inside >= 0 ? scene_intersect_inside(t->accel, r, inside, skip, REAL_FAR, &h)
+			  : scene_intersect_from(t->accel, r, level == 1 ? &t->eye : NULL, skip,
+						 REAL_FAR, &h))) {
+#else
 	if (!scene_intersect_from(t->accel, r, level == 1 ? &t->eye : NULL, skip, REAL_FAR, &h)) {
+#endif
 		if (hit_object)
 			*hit_object = -1;
 		/* A ray that never leaves an absorbing medium is absorbed completely. */

@@ -32,6 +32,9 @@ typedef struct {
 #if EYE_COVER
 	eye_cover cover; /* the eye rays that meet nothing, known without a search */
 #endif
+#if INSIDE_LISTS
+	int inside; /* the solid the next ray traced starts inside of, or -1 */
+#endif
 } tracer;
 
 /* Ready to trace the scene `a` searches (intersect.h). */

@@ -556,6 +556,112 @@ static void test_cut_cones(void)
 	CHECK_INT(shadow_mismatches, 0);
 }
 
+#if INSIDE_LISTS
+/* A point inside the sphere of centre c and radius r (scene units, times `scale`), at a
+ * depth below its surface from r / 2 down to 10^-12 of r, or as far outside. */
+static vec3 point_in_sphere(const double c[3], double r, double scale, int outside)
+{
+	double d[3], length = 0.0, depth = r * pow(10.0, -test_random_range(0.3, 12.0));
+	int i;
+	do {
+		length = 0.0;
+		for (i = 0; i < 3; i++) {
+			d[i] = test_random_range(-1.0, 1.0);
+			length += d[i] * d[i];
+		}
+	} while (length < 1e-6 || length > 1.0);
+	length = sqrt(length);
+	for (i = 0; i < 3; i++)
+		d[i] = c[i] + d[i] / length * (outside ? r + depth : r - depth);
+	return vec_make(test_real(d[0] * scale), test_real(d[1] * scale), test_real(d[2] * scale));
+}
+
+/* Compares `count` rays from inside (or just outside) solid `solid`, a sphere of centre c
+ * and radius r, through its list (lists l) and object by object. Returns the rays the
+ * list answered; counts disagreements in *mismatches. */
+static int compare_inside(const accel *tree, const accel *plain, const inside_lists *l,
+			  int solid, const double c[3], double r, int count, int *mismatches)
+{
+	double scale = test_double(s.camera.from.y) / -6.0;
+	int i, answered = 0;
+	for (i = 0; i < count; i++) {
+		double d[3];
+		hit listed, one_by_one;
+		int found_list, found_each, k;
+		ray ray_in;
+		ray_in.origin = point_in_sphere(c, r, scale, i % 16 == 0);
+		for (k = 0; k < 3; k++)
+			d[k] = test_random_range(-1.0, 1.0);
+		if (fabs(d[0]) + fabs(d[1]) + fabs(d[2]) < 1e-3)
+			continue;
+		ray_in.dir = dir_normalize(vec_make(test_real(d[0]), test_real(d[1]), test_real(d[2])));
+		if (inside_nearest(l, accel_scene(tree), &tree->tree, solid, &ray_in, -1, REAL_FAR,
+				   &listed, &found_list))
+			answered++;
+		else
+			found_list = scene_intersect_from(tree, &ray_in, NULL, -1, REAL_FAR, &listed);
+		found_each = scene_intersect_from(plain, &ray_in, NULL, -1, REAL_FAR, &one_by_one);
+		*mismatches += found_list != found_each ||
+			       (found_each && (listed.t != one_by_one.t ||
+					       listed.object != one_by_one.object));
+	}
+	return answered;
+}
+
+/* Rays inside transmitting solids (glass spheres that overlap, touch and hold other
+ * objects, a glass box, a glass sphere crowded past INSIDE_MAX) find the same nearest
+ * hit through the solid's list as object by object; a list with one object left out
+ * does not. */
+static void test_inside_lists(void)
+{
+	static const double a[3] = {0, 0, 0}, b[3] = {1.5, 0, 0}, c[3] = {3.1, 0, 0};
+	static const double crowded[3] = {10, 10, 10};
+	static inside_lists broken;
+	const accel *tree, *plain;
+	const inside_lists *l;
+	int mismatches = 0, answered, i, k;
+	test_seed(22);
+	if (!scene_of("inside.nff",
+		      "f 1 1 1 0 0 0 0.9 1.5\n"
+		      "s 0 0 0 1\ns 1.5 0 0 0.8\ns 3.1 0 0 0.8\nbox -1 -3 -1 1 -2 1\n"
+		      "s 10 10 10 1\n"
+		      "f 1 0 0 1 0 0 0 1\n"
+		      "s 0.3 0.2 0.1 0.2\np 3\n-2 0.5 -2\n2 0.5 -2\n0 0.5 2\n"
+		      "c -2 -2 -1 0.05 4 2 1 0.05\nplane 0 0 -5 0 0 1\n"
+		      "s 10 10 10.5 0.1\ns 10 10 9.5 0.1\ns 10 10.5 10 0.1\ns 10 9.5 10 0.1\n"
+		      "s 10.5 10 10 0.1\ns 9.5 10 10 0.1\ns 10.3 10.3 10 0.1\ns 9.7 9.7 10 0.1\n"
+		      "s 10.3 9.7 10 0.1\n",
+		      &tree, &plain))
+		return;
+	l = &tree->inside;
+	/* Lists for the four glass solids that have few neighbours, none for the crowded
+	 * one or the opaque objects; the first holds the sphere it overlaps (not the one
+	 * beyond, nor the box), the sphere inside it, the triangle and the rod. */
+	CHECK_INT(l->list_count, 4);
+	CHECK(l->list_of[0] >= 1 && l->list_of[0] <= l->list_count);
+	if (!CHECK(l->list_count >= 1) || !CHECK(l->lists[0].solid == 0))
+		return;
+	CHECK_INT(l->lists[0].count, 4); /* sphere 1, the inner sphere 5, triangle 6, rod 7 */
+	answered = compare_inside(tree, plain, l, 0, a, 1.0, 20000, &mismatches);
+	CHECK(answered > 15000);
+	answered = compare_inside(tree, plain, l, 1, b, 0.8, 20000, &mismatches);
+	CHECK(answered > 15000);
+	answered = compare_inside(tree, plain, l, 2, c, 0.8, 20000, &mismatches);
+	CHECK(answered > 15000);
+	CHECK_INT(compare_inside(tree, plain, l, 4, crowded, 1.0, 2000, &mismatches), 0);
+	CHECK_INT(mismatches, 0);
+	/* Without the sphere inside the first, its rays find the far side through it. */
+	broken = *l;
+	for (i = k = 0; i < broken.lists[0].count; i++)
+		if (broken.lists[0].objects[i] != 5)
+			broken.lists[0].objects[k++] = broken.lists[0].objects[i];
+	broken.lists[0].count = k;
+	mismatches = 0;
+	(void)compare_inside(tree, plain, &broken, 0, a, 1.0, 2000, &mismatches);
+	CHECK(mismatches > 20);
+}
+#endif
+
 /* Spheres of `count` at random centres in a cube of side `size` around `centre`, radii
  * from 1/1000 to 1/10 of it (with one_centre, all at the centre itself). */
 static int sphere_scene(int count, double centre, double size, int one_centre)
@@ -687,5 +793,8 @@ void suite_bvh(void)
 	test_transmittance_order();
 	test_cut_cones();
 	test_long_cone_pieces();
+#if INSIDE_LISTS
+	test_inside_lists();
+#endif
 #endif
 }

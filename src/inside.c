@@ -1,0 +1,127 @@
+/* inside.c - the objects a ray inside a transmitting solid can meet before it leaves the
+ * solid, listed once (inside.h), and the nearest hit of such a ray through its list.
+ * See LICENSE for copyright and licence. */
+#include "inside.h"
+
+#include "intersect.h"
+
+#if INSIDE_LISTS
+
+/* Whether the boxes [alo, ahi] and [blo, bhi] share a point (faces included). */
+static int boxes_meet(const bvh_point *alo, const bvh_point *ahi, const bvh_point *blo,
+		      const bvh_point *bhi)
+{
+	return alo->x <= bhi->x && blo->x <= ahi->x && alo->y <= bhi->y && blo->y <= ahi->y &&
+	       alo->z <= bhi->z && blo->z <= ahi->z;
+}
+
+/* Lists in l the objects other than `solid` whose boxes in the tree meet l's box: through
+ * the binary tree, each leaf's objects by their own boxes (a long cone cut in pieces,
+ * bvh_pieces.c, by the leaf's box, which holds its piece's). Returns 0 when they are more
+ * than INSIDE_MAX. */
+static int list_overlaps(inside_list *l, const scene *s, const bvh_tree *t, int solid)
+{
+	int stack[BVH_MAX_DEPTH + 2], top = 1;
+	l->count = 0;
+	stack[0] = 0;
+	while (top > 0) {
+		const bvh_node *n = &t->nodes[stack[--top]];
+		int i, k;
+		if (!boxes_meet(&n->bounds[0], &n->bounds[1], &l->lo, &l->hi))
+			continue;
+		if (!n->count) {
+			stack[top++] = n->start;
+			stack[top++] = n->start + 1;
+			continue;
+		}
+		for (i = n->start; i < n->start + n->count; i++) {
+			int o = t->index[i];
+			bvh_point lo, hi;
+			/* A long cone's pieces are in several leaves: listed once. */
+			for (k = 0; k < l->count && l->objects[k] != o; k++)
+				;
+			if (o == solid || k < l->count)
+				continue;
+			if (bvh_object_pieces(s, o) == 1 && bvh_object_box(s, o, &lo, &hi) &&
+			    !boxes_meet(&lo, &hi, &l->lo, &l->hi))
+				continue;
+			if (l->count == INSIDE_MAX)
+				return 0;
+			l->objects[l->count++] = o;
+		}
+	}
+	return 1;
+}
+
+void inside_build(inside_lists *l, const scene *s, const bvh_tree *t)
+{
+	int i;
+	l->list_count = 0;
+	for (i = 0; i < s->object_count; i++) {
+		const object *o = &s->objects[i];
+		inside_list *list = &l->lists[l->list_count];
+		/* A transmitting solid, which rays travel inside of (a flat object has no
+		 * inside), in a tree, in one box (as bvh_object_box gives it). */
+		if (!t->node_count || l->list_count == INSIDE_SOLIDS ||
+		    shape_is(SHAPE_FLAT, o->kind) || !(s->materials[o->material].kt > REAL_C(0.0)) ||
+		    bvh_object_pieces(s, i) != 1 || !bvh_object_box(s, i, &list->lo, &list->hi))
+			continue;
+		list->solid = i;
+		if (list_overlaps(list, s, t, i))
+			l->list_of[i] = ++l->list_count;
+	}
+}
+
+/* Visits object o for the nearest hit as the tree's search does (bvh_traverse.h's
+ * VISIT_NEAREST): a hit at the distance of the nearest so far goes to the lower index. */
+static void visit_nearest(const scene *s, int o, const ray *r, int skip, real *tmax, hit *h)
+{
+	hit tie;
+	if (o == skip)
+		return;
+	if (o < h->object) {
+		if (object_intersect(s, o, r, REAL_C(0.0), real_step_up(*tmax), &tie) &&
+		    tie.t <= *tmax) {
+			*h = tie;
+			*tmax = h->t;
+			h->object = o;
+		}
+	} else if (object_intersect(s, o, r, REAL_C(0.0), *tmax, h)) {
+		*tmax = h->t;
+		h->object = o;
+	}
+}
+
+/* Why the list's answer is the tree's: the ray starts in the solid's box and meets the
+ * solid at h->t, where it is in that box again; the box being convex, the ray is in it
+ * all the way between. Any object the ray meets before (or at) that distance it meets
+ * there, in its own box as the tree pads it (the tree's own guarantee), so its box meets
+ * the solid's, and it is listed; objects without bounds are tested as the tree tests
+ * them. Beyond that distance nothing can be nearer than the solid's hit. */
+int inside_nearest(const inside_lists *l, const scene *s, const bvh_tree *t, int solid,
+		   const ray *r, int skip, real tmax, hit *h, int *found)
+{
+	const inside_list *list;
+	const vec3 *o = &r->origin;
+	int i, k = l->list_of[solid];
+	if (k < 1 || k > l->list_count || solid == skip)
+		return 0;
+	list = &l->lists[k - 1];
+	if (list->solid != solid ||
+	    !(o->x >= (real)list->lo.x && o->x <= (real)list->hi.x && o->y >= (real)list->lo.y &&
+	      o->y <= (real)list->hi.y && o->z >= (real)list->lo.z && o->z <= (real)list->hi.z))
+		return 0;
+	if (!object_intersect(s, solid, r, REAL_C(0.0), tmax, h))
+		return 0;
+	h->object = solid;
+	tmax = h->t;
+	for (i = 0; i < t->unbounded_count; i++)
+		visit_nearest(s, t->index[i], r, skip, &tmax, h);
+	for (i = 0; i < list->count; i++)
+		visit_nearest(s, list->objects[i], r, skip, &tmax, h);
+	*found = 1;
+	return 1;
+}
+#else
+typedef int inside_unused; /* ISO C wants something in a translation unit */
+#endif
