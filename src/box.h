@@ -3,6 +3,7 @@
 #ifndef RT_BOX_H
 #define RT_BOX_H
 
+#include "tolerance.h"
 #include "vec.h"
 
 /* A box that holds nothing: every point grows it. */
@@ -33,6 +34,17 @@ static inline void box_grow_box(vec3 *lo, vec3 *hi, vec3 blo, vec3 bhi)
 	hi->x = real_max(hi->x, bhi.x);
 	hi->y = real_max(hi->y, bhi.y);
 	hi->z = real_max(hi->z, bhi.z);
+}
+
+/* How far an object's box [lo, hi] is grown on every side so that rounding never puts a
+ * hit the object's own test reports outside it: the secondary-ray offset of the box's
+ * size. The hierarchy pads its boxes so (bvh_pieces.c), a warped polygon's far-off hits
+ * are held to the same box (polygon.c), and the cone test bounds its near misses by half
+ * of it (cone.c). */
+static inline real box_rounding_pad(vec3 lo, vec3 hi)
+{
+	return real_surface_offset(real_max(REAL_C(1.0), real_max(vec_max_abs(lo), vec_max_abs(hi))),
+				   1);
 }
 
 /* Whether p lies in the box [lo, hi], faces included. */

@@ -122,10 +122,6 @@ void bvh_build(bvh_tree *t, const scene *s);
 int bvh_object_pieces(const scene *s, int index);
 int bvh_piece_bounds(const scene *s, int index, int piece, int pieces, vec3 *lo, vec3 *hi);
 
-/* The padding of an object's boxes, each side grown by it, from the object's whole box
- * [lo, hi] (bvh_pieces.c). */
-real bvh_box_pad(vec3 lo, vec3 hi);
-
 /* A box corner as the nodes keep it: rounded outwards (up for the upper corner) where
  * that is to float, else as it is. */
 static inline bvh_point bvh_round_corner(vec3 v, int up)

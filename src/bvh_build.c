@@ -471,7 +471,7 @@ void bvh_build(bvh_tree *t, const scene *s)
 		if (t->unbounded_count + boxes + pieces + (s->object_count - i - 1) >
 		    RT_MAX_OBJECTS)
 			pieces = 1;
-		pad = bvh_box_pad(lo, hi);
+		pad = box_rounding_pad(lo, hi); /* a piece is padded as its whole cone (cone.c) */
 		if (pieces == 1) {
 			item_make(boxes++, i, lo, hi, pad);
 			continue;

@@ -66,22 +66,13 @@ int bvh_piece_bounds(const scene *s, int index, int piece, int pieces, vec3 *lo,
 	return shape_bounds(s, o, lo, hi);
 }
 
-/* The secondary-ray offset of the size of the whole box (a piece's too: the cone test
- * bounds its near misses by half of that, cone.c), so that rounding never loses a hit
- * the object's own test would find. */
-real bvh_box_pad(vec3 lo, vec3 hi)
-{
-	return real_surface_offset(real_max(REAL_C(1.0), real_max(vec_max_abs(lo), vec_max_abs(hi))),
-				   1);
-}
-
 int bvh_object_box(const scene *s, int index, bvh_point *lo, bvh_point *hi)
 {
 	vec3 l, h, p;
 	real pad;
 	if (!(shape_bounds(s, &s->objects[index], &l, &h) && vec_is_finite(l) && vec_is_finite(h)))
 		return 0;
-	pad = bvh_box_pad(l, h);
+	pad = box_rounding_pad(l, h);
 	p = vec_make(pad, pad, pad);
 	*lo = bvh_round_corner(vec_sub(l, p), 0);
 	*hi = bvh_round_corner(vec_add(h, p), 1);

@@ -135,15 +135,15 @@ static real start_of(const cone_shape *c, const ray *r, vec3 to_base, unit dh)
 
 /* Floating types: does the hit at `height` along the axis, `radial` its offset from it,
  * lie within half the padding the hierarchy gives the cone's boxes (the offset scale of
- * the cone's coordinates, bvh_pieces.c) of the cone's side? The quadratic's rounding can
- * report a near miss as a hit; this bounds how near, so that a box of the cone, or of a
- * piece of its length, holds every hit the test reports, and the search through the
- * hierarchy finds what the search object by object finds. In the plane through the
- * axis the side is the segment from (0, r0) to (length, r1), and (height, r(height)) is
- * on it: a hit no farther out than that is near enough. A true hit may be farther out
- * where the cone is steep (the radius at a rounded height is far off), so the other
- * hits are measured from (height, |radial|) to the segment, which for a true hit is a
- * few ulps of the coordinates whatever the slope. */
+ * the cone's coordinates, box.h's box_rounding_pad) of the cone's side? The quadratic's
+ * rounding can report a near miss as a hit; this bounds how near, so that a box of the
+ * cone, or of a piece of its length, holds every hit the test reports, and the search
+ * through the hierarchy finds what the search object by object finds. In the plane
+ * through the axis the side is the segment from (0, r0) to (length, r1), and (height,
+ * r(height)) is on it: a hit no farther out than that is near enough. A true hit may be
+ * farther out where the cone is steep (the radius at a rounded height is far off), so the
+ * other hits are measured from (height, |radial|) to the segment, which for a true hit
+ * is a few ulps of the coordinates whatever the slope. */
 static int near_side(const cone_shape *c, vec3 radial, real height)
 {
 	real reach = real_surface_offset(cone_scale(c), 1) / REAL_C(2.0);

@@ -322,15 +322,14 @@ int polygon_bounds(const scene *s, const polygon_shape *poly, vec3 *lo, vec3 *hi
 	return 1;
 }
 
-/* Whether p lies in the polygon's bounds, padded for rounding as the hierarchy pads them
- * (bvh_pieces.c). */
+/* Whether p lies in the polygon's bounds, padded for rounding as the hierarchy pads them. */
 static int reaches(const scene *s, const polygon_shape *poly, vec3 p)
 {
 	vec3 lo, hi, pad;
+	real grow;
 	polygon_bounds(s, poly, &lo, &hi);
-	pad = vec_make(REAL_C(1.0), REAL_C(1.0), REAL_C(1.0));
-	pad = vec_scale(pad, real_surface_offset(
-				     real_max(REAL_C(1.0), real_max(vec_max_abs(lo), vec_max_abs(hi))), 1));
+	grow = box_rounding_pad(lo, hi);
+	pad = vec_make(grow, grow, grow);
 	return box_holds(vec_sub(lo, pad), vec_add(hi, pad), p);
 }
 
