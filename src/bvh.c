@@ -130,11 +130,29 @@ static inline int box_hit(const bvh_node *n, const slab_ray *r, real tmax, real 
 }
 
 #if BVH_WIDE
+/* The byte offsets in a node of the rows a ray enters a box by (at[axis]) and leaves it
+ * by (at[3 + axis]), for each choice of the signs of 1 / d (bit axis set: negative). */
+typedef struct {
+	size_t at[6];
+} wide_rows;
+
+#define WIDE_ROW_AT(row) (offsetof(bvh_wide_node, box) + (size_t)(row) * sizeof(float) * WIDE_LANES)
+#define WIDE_SIGN(signs, axis) ((signs) >> (axis) & 1)
+#define WIDE_ROWS(signs)                                                                  \
+	{                                                                                  \
+		{WIDE_ROW_AT(0 + WIDE_SIGN(signs, 0)), WIDE_ROW_AT(2 + WIDE_SIGN(signs, 1)),     \
+		 WIDE_ROW_AT(4 + WIDE_SIGN(signs, 2)), WIDE_ROW_AT(1 - WIDE_SIGN(signs, 0)),     \
+		 WIDE_ROW_AT(3 - WIDE_SIGN(signs, 1)), WIDE_ROW_AT(5 - WIDE_SIGN(signs, 2))}     \
+	}
+static const wide_rows wide_row_table[8] = {WIDE_ROWS(0), WIDE_ROWS(1), WIDE_ROWS(2),
+					    WIDE_ROWS(3), WIDE_ROWS(4), WIDE_ROWS(5),
+					    WIDE_ROWS(6), WIDE_ROWS(7)};
+
 /* A ray prepared for the wide tree's float slab tests, made so that a computed entry is
  * never after the true one and a computed exit never before it (Ize, "Robust BVH ray
- * traversal", gives the same argument): per axis the origin rounded to float twice, each
- * way, and the near plane's distance taken from the copy that makes it smallest, the far
- * plane's from the one that makes it largest; what the float subtraction, product and
+ * traversal", gives the same argument): per axis two float copies of the origin, one at
+ * or below it and one at or above (WIDE_WIDEN), and the near plane's distance taken from
+ * the copy that makes it smallest, the far plane's from the one that makes it largest; what the float subtraction, product and
  * reciprocal round is relative to the distance, at most 4 2^-24, and the test allows
  * WIDE_SLACK for it. Rays with an origin beyond WIDE_LIMIT or a direction component
  * below 1 / WIDE_LIMIT (other than 0) are left to the binary tree: there the reciprocal
@@ -146,7 +164,7 @@ typedef struct {
 	/* Where in a node the box rows are of the planes the ray enters by (row 2 axis +
 	 * (1 / d < 0): -0 counts as negative) and of those it leaves by: byte offsets, so
 	 * that a node's test finds each row with one addition (wide_row). */
-	size_t near_row[3], far_row[3];
+	wide_rows rows;
 #if WIDE_SSE
 	/* The SSE test's copies of near_from, far_from and inv in four lanes, made once a
 	 * search by its own traversal (WIDE_PREPARE): the object tests between two nodes
@@ -157,111 +175,79 @@ typedef struct {
 } wide_ray;
 
 #define WIDE_LIMIT REAL_C(1.2676506002282294e30) /* 2^100 */
-#define WIDE_ROW (sizeof(float) * WIDE_LANES) /* the bytes of one row of a node's box */
 
-/* Where row `row` of a node's box is, in bytes from the node's start. */
-static inline size_t wide_row_offset(int row)
-{
-	return offsetof(bvh_wide_node, box) + (size_t)row * WIDE_ROW;
-}
-
-/* The row of node n's box `offset` bytes into the node (a wide_ray's near_row, far_row). */
+/* The row of node n's box `offset` bytes into the node (a wide_ray's rows). */
 static inline const float *wide_row(const bvh_wide_node *n, size_t offset)
 {
 	return (const float *)(const void *)((const char *)n + offset);
 }
 #define WIDE_SLACK (1.0f + 1.0f / 1048576.0f)     /* 1 + 2^-20: covers 8 2^-24 */
 
+/* The origin's float copies below and above it: o -+ (|o| 2^-22 + 2^-140) rounded to
+ * float. 2^-22 of |o| is two of float's steps at o or more, so rounding to the nearest
+ * float cannot cross o; 2^-140 is many subnormal steps, for an o too small for that.
+ * One subtraction, one addition and their conversions, without comparisons: the
+ * bounds are a step or two wider than o's neighbouring floats, which no box test notices. */
+#define WIDE_WIDEN REAL_C(2.384185791015625e-07) /* 2^-22 */
+#define WIDE_TINY REAL_C(7.174648137343064e-43)  /* 2^-140 */
+
 #if WIDE_SSE2_RAY
 /* The operations of wide_axis (the scalar form, below) on the three axes at once, with
  * SSE2 (doubles in pairs, their floats in one register): the same bits in fewer
- * instructions. A ray's preparation was a tenth of SPD mount's instructions. */
-
-/* The 32-bit halves of two pairs of 64-bit comparison masks, as the first three lanes. */
-static inline __m128i wide_mask_pack(__m128d xy, __m128d z)
-{
-	return _mm_castps_si128(
-		_mm_shuffle_ps(_mm_castpd_ps(xy), _mm_castpd_ps(z), _MM_SHUFFLE(2, 0, 2, 0)));
-}
-
-/* Lanes of a where mask m is set, of b elsewhere. */
-static inline __m128i wide_select(__m128i m, __m128i a, __m128i b)
-{
-	return _mm_or_si128(_mm_and_si128(m, a), _mm_andnot_si128(m, b));
-}
-
+ * instructions. A ray's preparation was a tenth of SPD mount's instructions once, and
+ * with the exact neighbouring floats of the origin still about 100 instructions a search
+ * (SPD balls, 2026-12-06). */
 static inline int wide_ray_make(wide_ray *w, const ray *r)
 {
 	const __m128d limit = _mm_set1_pd(WIDE_LIMIT), least = _mm_set1_pd(1.0 / WIDE_LIMIT);
 	const __m128d magnitude = _mm_castsi128_pd(_mm_set1_epi64x(0x7fffffffffffffffLL));
+	const __m128d widen = _mm_set1_pd(WIDE_WIDEN), tiny = _mm_set1_pd(WIDE_TINY);
+	/* z in both lanes of its pair: the upper passes or fails the checks as the lower. */
 	__m128d oxy = _mm_set_pd(r->origin.y, r->origin.x), oz = _mm_set1_pd(r->origin.z);
 	__m128d dxy = _mm_set_pd(r->dir.y, r->dir.x), dz = _mm_set1_pd(r->dir.z);
-	__m128d zero = _mm_setzero_pd(), fxy, fz;
-	__m128i bits, away, below, above, other, lower, upper, negative;
-	__m128 f, inv;
-	int signs, axis;
+	__m128d zero = _mm_setzero_pd(), axy = _mm_and_pd(oxy, magnitude);
+	__m128d az = _mm_and_pd(oz, magnitude), gxy, gz, okxy, okz;
+	__m128 lower, upper, inv, negative;
 	/* |o| < WIDE_LIMIT, and d = 0 or |d| > 1 / WIDE_LIMIT, on every axis (NaN fails). */
-	if ((_mm_movemask_pd(_mm_cmplt_pd(_mm_and_pd(oxy, magnitude), limit)) & 3) != 3 ||
-	    !(_mm_movemask_pd(_mm_cmplt_pd(_mm_and_pd(oz, magnitude), limit)) & 1) ||
-	    (_mm_movemask_pd(_mm_or_pd(_mm_cmpeq_pd(dxy, zero),
-				       _mm_cmpgt_pd(_mm_and_pd(dxy, magnitude), least))) & 3) != 3 ||
-	    !(_mm_movemask_pd(_mm_or_pd(_mm_cmpeq_pd(dz, zero),
-				       _mm_cmpgt_pd(_mm_and_pd(dz, magnitude), least))) & 1))
+	okxy = _mm_and_pd(_mm_cmplt_pd(axy, limit),
+			  _mm_or_pd(_mm_cmpeq_pd(dxy, zero),
+				    _mm_cmpgt_pd(_mm_and_pd(dxy, magnitude), least)));
+	okz = _mm_and_pd(_mm_cmplt_pd(az, limit),
+			 _mm_or_pd(_mm_cmpeq_pd(dz, zero), _mm_cmpgt_pd(_mm_and_pd(dz, magnitude), least)));
+	if (_mm_movemask_pd(_mm_and_pd(okxy, okz)) != 3)
 		return 0;
-	f = _mm_movelh_ps(_mm_cvtpd_ps(oxy), _mm_cvtpd_ps(oz));
-	fxy = _mm_cvtps_pd(f);
-	fz = _mm_cvtps_pd(_mm_movehl_ps(f, f));
-	below = wide_mask_pack(_mm_cmplt_pd(fxy, oxy), _mm_cmplt_pd(fz, oz));
-	above = wide_mask_pack(_mm_cmpgt_pd(fxy, oxy), _mm_cmpgt_pd(fz, oz));
-	bits = _mm_castps_si128(f);
-	away = _mm_or_si128(_mm_srai_epi32(bits, 31), _mm_set1_epi32(1)); /* 1, or -1 for f < 0 */
-	other = _mm_sub_epi32(_mm_add_epi32(bits, _mm_and_si128(below, away)),
-			      _mm_and_si128(above, away));
-	lower = wide_select(above, other, bits);
-	upper = wide_select(above, bits, other);
+	gxy = _mm_add_pd(_mm_mul_pd(axy, widen), tiny);
+	gz = _mm_add_pd(_mm_mul_pd(az, widen), tiny);
+	lower = _mm_movelh_ps(_mm_cvtpd_ps(_mm_sub_pd(oxy, gxy)), _mm_cvtpd_ps(_mm_sub_pd(oz, gz)));
+	upper = _mm_movelh_ps(_mm_cvtpd_ps(_mm_add_pd(oxy, gxy)), _mm_cvtpd_ps(_mm_add_pd(oz, gz)));
 	inv = _mm_div_ps(_mm_set1_ps(1.0f), _mm_movelh_ps(_mm_cvtpd_ps(dxy), _mm_cvtpd_ps(dz)));
-	negative = _mm_castps_si128(_mm_cmplt_ps(inv, _mm_setzero_ps()));
+	negative = _mm_cmplt_ps(inv, _mm_setzero_ps());
 	_mm_storeu_ps(w->inv, inv);
-	_mm_storeu_ps(w->near_from, _mm_castsi128_ps(wide_select(negative, lower, upper)));
-	_mm_storeu_ps(w->far_from, _mm_castsi128_ps(wide_select(negative, upper, lower)));
-	signs = _mm_movemask_ps(_mm_castsi128_ps(negative));
-	for (axis = 0; axis < 3; axis++) {
-		int neg = (signs >> axis) & 1;
-		w->near_row[axis] = wide_row_offset(2 * axis + neg);
-		w->far_row[axis] = wide_row_offset(2 * axis + !neg);
-	}
+	_mm_storeu_ps(w->near_from, _mm_or_ps(_mm_and_ps(negative, lower),
+					      _mm_andnot_ps(negative, upper)));
+	_mm_storeu_ps(w->far_from, _mm_or_ps(_mm_and_ps(negative, upper),
+					     _mm_andnot_ps(negative, lower)));
+	w->rows = wide_row_table[_mm_movemask_ps(negative) & 7];
 	return 1;
 }
 #else
-/* One axis of wide_ray_make: origin component o, direction component d. Without
- * branches on the data: whether o rounds up or down to float, and the direction's
- * sign, are each a coin toss for rays from hit points, and mispredicted branches on them
- * were a tenth of SPD mount's time. */
-static inline int wide_axis(wide_ray *w, int axis, real o, unit d)
+/* One axis of wide_ray_make: origin component o, direction component d; the axis's bit
+ * of *signs set for 1 / d < 0. Without branches on the data: the direction's sign is a
+ * coin toss for rays from hit points, and mispredicted branches on such tests were a
+ * tenth of SPD mount's time. */
+static inline int wide_axis(wide_ray *w, int axis, real o, unit d, int *signs)
 {
-	float fd = (float)d, f, copies[2];
-	uint32_t bits, away;
-	int below, above, negative;
+	real widen = real_fabs(o) * WIDE_WIDEN + WIDE_TINY;
+	float copies[2];
+	int negative;
 	if (!(real_fabs(o) < WIDE_LIMIT) ||
 	    (d != UNIT_C(0.0) && !(unit_fabs(d) > UNIT_C(1.0) / WIDE_LIMIT)))
 		return 0;
-	/* The origin rounded up and down to float: float_outward's results, from one
-	 * conversion (o is well inside float's range here). The float next to f away from
-	 * 0 has bits one more, towards 0 one less; f = 0 has o's sign, and its step away
-	 * is the least subnormal of that sign. */
-	f = (float)o;
-	below = (real)f < o; /* f is the lower bound, the upper the next float up */
-	above = (real)f > o; /* f is the upper bound, the lower the next float down */
-	memcpy(&bits, &f, sizeof bits);
-	away = 1u - ((bits >> 31) << 1); /* 1 or, for f < 0, -1: +1 moves up for f >= 0 */
-	bits += (uint32_t)below * away - (uint32_t)above * away; /* the other bound */
-	memcpy(&copies[0], &bits, sizeof bits);
-	copies[1] = copies[0];
-	copies[above] = f; /* copies[0] the lower bound, copies[1] the upper */
-	w->inv[axis] = 1.0f / fd; /* a zero keeps its sign: 1 / -0 is -infinity */
+	copies[0] = (float)(o - widen);
+	copies[1] = (float)(o + widen);
+	w->inv[axis] = 1.0f / (float)d; /* a zero keeps its sign: 1 / -0 is -infinity */
 	negative = w->inv[axis] < 0.0f;
-	w->near_row[axis] = wide_row_offset(2 * axis + negative);
-	w->far_row[axis] = wide_row_offset(2 * axis + !negative);
+	*signs |= negative << axis;
 	/* Entering through the lower plane the origin's upper copy gives the smaller
 	 * distance, and the other way round. */
 	w->near_from[axis] = copies[!negative];
@@ -271,8 +257,13 @@ static inline int wide_axis(wide_ray *w, int axis, real o, unit d)
 
 static inline int wide_ray_make(wide_ray *w, const ray *r)
 {
-	return wide_axis(w, 0, r->origin.x, r->dir.x) && wide_axis(w, 1, r->origin.y, r->dir.y) &&
-	       wide_axis(w, 2, r->origin.z, r->dir.z);
+	int signs = 0;
+	if (!(wide_axis(w, 0, r->origin.x, r->dir.x, &signs) &&
+	      wide_axis(w, 1, r->origin.y, r->dir.y, &signs) &&
+	      wide_axis(w, 2, r->origin.z, r->dir.z, &signs)))
+		return 0;
+	w->rows = wide_row_table[signs];
+	return 1;
 }
 #endif
 
@@ -297,8 +288,8 @@ static inline int wide_hit(const bvh_wide_node *n, const wide_ray *r, float tmax
 		__m128 tnear = _mm_setzero_ps(), tfar = _mm_set1_ps(tmax);
 		int axis;
 		for (axis = 0; axis < 3; axis++) {
-			const float *lo = wide_row(n, r->near_row[axis]) + group;
-			const float *hi = wide_row(n, r->far_row[axis]) + group;
+			const float *lo = wide_row(n, r->rows.at[axis]) + group;
+			const float *hi = wide_row(n, r->rows.at[3 + axis]) + group;
 			__m128 t0 = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(lo), r->near_from4[axis]),
 					       r->inv4[axis]);
 			__m128 t1 = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(hi), r->far_from4[axis]),
@@ -318,8 +309,8 @@ static inline int wide_hit(const bvh_wide_node *n, const wide_ray *r, float tmax
 	for (i = 0; i < WIDE_LANES; i++) {
 		float tnear = 0.0f, tfar = tmax;
 		for (axis = 0; axis < 3; axis++) {
-			float lo = wide_row(n, r->near_row[axis])[i];
-			float hi = wide_row(n, r->far_row[axis])[i];
+			float lo = wide_row(n, r->rows.at[axis])[i];
+			float hi = wide_row(n, r->rows.at[3 + axis])[i];
 			float t0 = (lo - r->near_from[axis]) * r->inv[axis];
 			float t1 = (hi - r->far_from[axis]) * r->inv[axis];
 			tnear = t0 > tnear ? t0 : tnear;
@@ -345,8 +336,8 @@ static inline WIDE_AVX_TARGET int wide_hit_avx(const bvh_wide_node *n, const wid
 	 * value the compiler holds in a register took three). */
 	for (axis = 0; axis < 3; axis++) {
 		__m256 inv = _mm256_broadcast_ss(&r->inv[axis]);
-		__m256 lo = _mm256_loadu_ps(wide_row(n, r->near_row[axis]));
-		__m256 hi = _mm256_loadu_ps(wide_row(n, r->far_row[axis]));
+		__m256 lo = _mm256_loadu_ps(wide_row(n, r->rows.at[axis]));
+		__m256 hi = _mm256_loadu_ps(wide_row(n, r->rows.at[3 + axis]));
 		__m256 from_near = _mm256_broadcast_ss(&r->near_from[axis]);
 		__m256 from_far = _mm256_broadcast_ss(&r->far_from[axis]);
 		__m256 t0 = _mm256_mul_ps(_mm256_sub_ps(lo, from_near), inv);
@@ -477,6 +468,15 @@ static real transmittance_in_order(const scene *s, crossing *c)
 	return pass;
 }
 
+/* The search is built into one function for each query, the query a constant in each:
+ * a search of either kind then carries no test of which it is, and no arguments the
+ * other needs (on SPD balls, 2 % of the instructions). */
+#if defined(__GNUC__)
+#define TRAVERSE_INLINE __attribute__((always_inline)) inline
+#else
+#define TRAVERSE_INLINE inline
+#endif
+
 #define TRAVERSE traverse
 #define TRAVERSE_TARGET
 #define WIDE_HIT wide_hit
@@ -486,25 +486,49 @@ static real transmittance_in_order(const scene *s, crossing *c)
 #define WIDE_PREPARE(w) ((void)(w))
 #endif
 #include "bvh_traverse.h"
+
+static int nearest(const scene *s, const bvh_tree *t, const ray *r, int skip, real tmax, hit *h)
+{
+	int found;
+	(void)traverse(s, t, r, skip, tmax, h, 0, &found);
+	return found;
+}
+
+static real transmittance(const scene *s, const bvh_tree *t, const ray *r, int skip, real tmax,
+			  int *blocker)
+{
+	return traverse(s, t, r, skip, tmax, NULL, 1, blocker);
+}
+
 #if WIDE_AVX
 #define TRAVERSE traverse_avx
 #define TRAVERSE_TARGET WIDE_AVX_TARGET
 #define WIDE_HIT wide_hit_avx
 #define WIDE_PREPARE(w) ((void)(w))
 #include "bvh_traverse.h"
+
+static WIDE_AVX_TARGET int nearest_avx(const scene *s, const bvh_tree *t, const ray *r, int skip,
+				       real tmax, hit *h)
+{
+	int found;
+	(void)traverse_avx(s, t, r, skip, tmax, h, 0, &found);
+	return found;
+}
+
+static WIDE_AVX_TARGET real transmittance_avx(const scene *s, const bvh_tree *t, const ray *r,
+					      int skip, real tmax, int *blocker)
+{
+	return traverse_avx(s, t, r, skip, tmax, NULL, 1, blocker);
+}
 #endif
 
 int bvh_nearest(const scene *s, const bvh_tree *t, const ray *r, int skip, real tmax, hit *h)
 {
-	int found;
 #if WIDE_AVX
-	if (avx_present()) {
-		(void)traverse_avx(s, t, r, skip, tmax, h, 0, &found);
-		return found;
-	}
+	if (avx_present())
+		return nearest_avx(s, t, r, skip, tmax, h);
 #endif
-	(void)traverse(s, t, r, skip, tmax, h, 0, &found);
-	return found;
+	return nearest(s, t, r, skip, tmax, h);
 }
 
 real bvh_transmittance(const scene *s, const bvh_tree *t, const ray *r, int skip, real tmax,
@@ -512,8 +536,7 @@ real bvh_transmittance(const scene *s, const bvh_tree *t, const ray *r, int skip
 {
 #if WIDE_AVX
 	if (avx_present())
-		return traverse_avx(s, t, r, skip, tmax, NULL, 1, blocker);
+		return transmittance_avx(s, t, r, skip, tmax, blocker);
 #endif
-	return traverse(s, t, r, skip, tmax, NULL, 1, blocker);
+	return transmittance(s, t, r, skip, tmax, blocker);
 }
-

@@ -11,8 +11,9 @@
  * of the kt of every transmitting object crossed, stopping at the first opaque one
  * (*found gets it, or -1), taken again in the objects' order where that matters (three
  * or more: transmittance_in_order). */
-static TRAVERSE_TARGET real TRAVERSE(const scene *s, const bvh_tree *t, const ray *r,
-				     int skip, real tmax, hit *h, int shadow, int *found)
+static TRAVERSE_TARGET TRAVERSE_INLINE real TRAVERSE(const scene *s, const bvh_tree *t,
+						     const ray *r, int skip, real tmax, hit *h,
+						     int shadow, int *found)
 {
 	struct {
 		int node;
