@@ -3,6 +3,7 @@
  * See LICENSE for copyright and licence. */
 #include "inside.h"
 
+#include "box.h"
 #include "intersect.h"
 
 #if INSIDE_LISTS
@@ -15,19 +16,29 @@ static int boxes_meet(const bvh_point *alo, const bvh_point *ahi, const bvh_poin
 	       alo->z <= bhi->z && blo->z <= ahi->z;
 }
 
-/* Lists in l the objects other than `solid` whose boxes in the tree meet l's box: through
+/* Lists in l the objects other than `solid` whose boxes in the tree meet l's box grown by
+ * its padding: through
  * the binary tree, each leaf's objects by their own boxes (a long cone cut in pieces,
  * bvh_pieces.c, by the leaf's box, which holds its piece's). Returns 0 when they are more
  * than INSIDE_MAX. */
 static int list_overlaps(inside_list *l, const scene *s, const bvh_tree *t, int solid)
 {
 	int stack[BVH_MAX_DEPTH + 2], top = 1;
+	bvh_point reach_lo, reach_hi;
+	{
+		vec3 lo = vec_make((real)l->lo.x, (real)l->lo.y, (real)l->lo.z);
+		vec3 hi = vec_make((real)l->hi.x, (real)l->hi.y, (real)l->hi.z);
+		real pad = box_rounding_pad(lo, hi);
+		vec3 grow = vec_make(pad, pad, pad);
+		reach_lo = bvh_round_corner(vec_sub(lo, grow), 0);
+		reach_hi = bvh_round_corner(vec_add(hi, grow), 1);
+	}
 	l->count = 0;
 	stack[0] = 0;
 	while (top > 0) {
 		const bvh_node *n = &t->nodes[stack[--top]];
 		int i, k;
-		if (!boxes_meet(&n->bounds[0], &n->bounds[1], &l->lo, &l->hi))
+		if (!boxes_meet(&n->bounds[0], &n->bounds[1], &reach_lo, &reach_hi))
 			continue;
 		if (!n->count) {
 			stack[top++] = n->start;
@@ -43,7 +54,7 @@ static int list_overlaps(inside_list *l, const scene *s, const bvh_tree *t, int 
 			if (o == solid || k < l->count)
 				continue;
 			if (bvh_object_pieces(s, o) == 1 && bvh_object_box(s, o, &lo, &hi) &&
-			    !boxes_meet(&lo, &hi, &l->lo, &l->hi))
+			    !boxes_meet(&lo, &hi, &reach_lo, &reach_hi))
 				continue;
 			if (l->count == INSIDE_MAX)
 				return 0;
@@ -57,6 +68,11 @@ void inside_build(inside_lists *l, const scene *s, const bvh_tree *t)
 {
 	int i;
 	l->list_count = 0;
+	/* A polyhedron's box may leave out a corner (hedron.c), and a list would then miss
+	 * the polyhedron where it pokes into a solid's box: no lists (inside.h). */
+	for (i = 0; i < s->object_count; i++)
+		if (s->objects[i].kind == SHAPE_HEDRON)
+			return;
 	for (i = 0; i < s->object_count; i++) {
 		const object *o = &s->objects[i];
 		inside_list *list = &l->lists[l->list_count];
@@ -92,12 +108,14 @@ static void visit_nearest(const scene *s, int o, const ray *r, int skip, real *t
 	}
 }
 
-/* Why the list's answer is the tree's: the ray starts in the solid's box and meets the
- * solid at h->t, where it is in that box again; the box being convex, the ray is in it
- * all the way between. Any object the ray meets before (or at) that distance it meets
- * there, in its own box as the tree pads it (the tree's own guarantee), so its box meets
- * the solid's, and it is listed; objects without bounds are tested as the tree tests
- * them. Beyond that distance nothing can be nearer than the solid's hit. */
+/* Why the list's answer is the tree's: the ray starts in the solid's box (checked
+ * exactly) and meets the solid at h->t at a point found in the box too (checked; the
+ * true point is within the point's rounding of it, far less than the box's padding); the
+ * box being convex, the ray stays in it, so grown, all the way between. Any object the
+ * ray meets before (or at) that distance it meets there, in its own box as the tree pads
+ * it (the tree's own guarantee, which polyhedra do not keep: inside_build), so its box
+ * meets the solid's grown box, and it is listed; objects without bounds are tested as
+ * the tree tests them. Beyond that distance nothing can be nearer than the solid's hit. */
 int inside_nearest(const inside_lists *l, const scene *s, const bvh_tree *t, int solid,
 		   const ray *r, int skip, real tmax, hit *h, int *found)
 {
@@ -111,7 +129,13 @@ int inside_nearest(const inside_lists *l, const scene *s, const bvh_tree *t, int
 	    !(o->x >= (real)list->lo.x && o->x <= (real)list->hi.x && o->y >= (real)list->lo.y &&
 	      o->y <= (real)list->hi.y && o->z >= (real)list->lo.z && o->z <= (real)list->hi.z))
 		return 0;
-	if (!object_intersect(s, solid, r, REAL_C(0.0), tmax, h))
+	/* The solid's hit must lie in its box, as the argument above needs (a ray from exactly
+	 * on a sphere, tangent to it, can be given a root far off, which the tree would not
+	 * take as nearest); the computed point is within the box's padding of the true one. */
+	if (!object_intersect(s, solid, r, REAL_C(0.0), tmax, h) ||
+	    !(h->point.x >= (real)list->lo.x && h->point.x <= (real)list->hi.x &&
+	      h->point.y >= (real)list->lo.y && h->point.y <= (real)list->hi.y &&
+	      h->point.z >= (real)list->lo.z && h->point.z <= (real)list->hi.z))
 		return 0;
 	h->object = solid;
 	tmax = h->t;
