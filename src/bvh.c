@@ -136,7 +136,8 @@ typedef struct {
 	size_t at[6];
 } wide_rows;
 
-#define WIDE_ROW_AT(row) (offsetof(bvh_wide_node, box) + (size_t)(row) * sizeof(float) * WIDE_LANES)
+#define WIDE_ROW_AT(row) \
+	(offsetof(bvh_wide_node, box) + (size_t)(row) * sizeof(float) * WIDE_LANES)
 #define WIDE_SIGN(signs, axis) ((signs) >> (axis) & 1)
 #define WIDE_ROWS(signs)                                                                  \
 	{                                                                                  \
@@ -152,11 +153,12 @@ static const wide_rows wide_row_table[8] = {WIDE_ROWS(0), WIDE_ROWS(1), WIDE_ROW
  * never after the true one and a computed exit never before it (Ize, "Robust BVH ray
  * traversal", gives the same argument): per axis two float copies of the origin, one at
  * or below it and one at or above (WIDE_WIDEN), and the near plane's distance taken from
- * the copy that makes it smallest, the far plane's from the one that makes it largest; what the float subtraction, product and
- * reciprocal round is relative to the distance, at most 4 2^-24, and the test allows
- * WIDE_SLACK for it. Rays with an origin beyond WIDE_LIMIT or a direction component
- * below 1 / WIDE_LIMIT (other than 0) are left to the binary tree: there the reciprocal
- * would not be a float, or a product could lose its relative accuracy. */
+ * the copy that makes it smallest, the far plane's from the one that makes it largest;
+ * what the float subtraction, product and reciprocal round is relative to the distance,
+ * at most 4 2^-24, and the test allows WIDE_SLACK for it. Rays with an origin beyond
+ * WIDE_LIMIT or a direction component below 1 / WIDE_LIMIT (other than 0) are left to
+ * the binary tree: there the reciprocal would not be a float, or a product could lose
+ * its relative accuracy. */
 typedef struct {
 	/* The origin, rounded for each plane; 1 / d (+-infinity for a zero component, by
 	 * its sign). A fourth element each, unused, lets SSE store all three at once. */

@@ -108,6 +108,13 @@ static void visit_nearest(const scene *s, int o, const ray *r, int skip, real *t
 	}
 }
 
+/* Whether p lies in the solid's box of list l (faces included, exactly). */
+static int list_holds(const inside_list *l, const vec3 *p)
+{
+	return p->x >= (real)l->lo.x && p->x <= (real)l->hi.x && p->y >= (real)l->lo.y &&
+	       p->y <= (real)l->hi.y && p->z >= (real)l->lo.z && p->z <= (real)l->hi.z;
+}
+
 /* Why the list's answer is the tree's: the ray starts in the solid's box (checked
  * exactly) and meets the solid at h->t at a point found in the box too (checked; the
  * true point is within the point's rounding of it, far less than the box's padding); the
@@ -120,22 +127,16 @@ int inside_nearest(const inside_lists *l, const scene *s, const bvh_tree *t, int
 		   const ray *r, int skip, real tmax, hit *h, int *found)
 {
 	const inside_list *list;
-	const vec3 *o = &r->origin;
 	int i, k = l->list_of[solid];
 	if (k < 1 || k > l->list_count || solid == skip)
 		return 0;
 	list = &l->lists[k - 1];
-	if (list->solid != solid ||
-	    !(o->x >= (real)list->lo.x && o->x <= (real)list->hi.x && o->y >= (real)list->lo.y &&
-	      o->y <= (real)list->hi.y && o->z >= (real)list->lo.z && o->z <= (real)list->hi.z))
+	if (list->solid != solid || !list_holds(list, &r->origin))
 		return 0;
 	/* The solid's hit must lie in its box, as the argument above needs (a ray from exactly
 	 * on a sphere, tangent to it, can be given a root far off, which the tree would not
 	 * take as nearest); the computed point is within the box's padding of the true one. */
-	if (!object_intersect(s, solid, r, REAL_C(0.0), tmax, h) ||
-	    !(h->point.x >= (real)list->lo.x && h->point.x <= (real)list->hi.x &&
-	      h->point.y >= (real)list->lo.y && h->point.y <= (real)list->hi.y &&
-	      h->point.z >= (real)list->lo.z && h->point.z <= (real)list->hi.z))
+	if (!object_intersect(s, solid, r, REAL_C(0.0), tmax, h) || !list_holds(list, &h->point))
 		return 0;
 	h->object = solid;
 	tmax = h->t;

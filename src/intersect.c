@@ -58,6 +58,13 @@ static void face_forward(const ray *r, hit *h)
 		h->shading = dir_neg(h->shading);
 }
 
+/* What every query's nearest hit gets once found: normals faced, roughness noted. */
+static void hit_finish(const scene *s, const ray *r, hit *h)
+{
+	face_forward(r, h);
+	h->rough = (int)shape_is(SHAPE_ROUGH, s->objects[h->object].kind);
+}
+
 void object_origin_term(const object *o, vec3 origin, origin_term *k)
 {
 	if (o->kind == SHAPE_SPHERE) {
@@ -148,10 +155,8 @@ int scene_intersect_from(const accel *a, const ray *r, const origin_terms *k, in
 			}
 		}
 	}
-	if (found) {
-		face_forward(r, h);
-		h->rough = (int)shape_is(SHAPE_ROUGH, s->objects[h->object].kind);
-	}
+	if (found)
+		hit_finish(s, r, h);
 	return found;
 }
 
@@ -163,8 +168,7 @@ int scene_intersect_inside(const accel *a, const ray *r, int solid, int skip, re
 	if (solid < 0 || !a->tree.node_count ||
 	    !inside_nearest(&a->inside, s, &a->tree, solid, r, skip, tmax, h, &found))
 		return scene_intersect_from(a, r, NULL, skip, tmax, h);
-	face_forward(r, h);
-	h->rough = (int)shape_is(SHAPE_ROUGH, s->objects[h->object].kind);
+	hit_finish(s, r, h);
 	return found;
 }
 #endif
