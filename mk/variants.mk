@@ -37,9 +37,11 @@ VARIANT_CFLAGS = $(WARN) $(HOST_MODEL) -ffp-contract=off $(VARIANT_FLAGS_$*)
 variants: $(TYPES:%=build/rt-%)
 
 # The same strict warnings with clang (installed by tools/need if missing), every type.
+CLANG_MODEL = $(call host_model,clang)
 build/clang/rt-%: $(SRC) $(HDR)
 	@sh tools/need clang
-	$(call whole-program,clang,$(VARIANT_CFLAGS) -O2,$(SRC),-lm)
+	$(call whole-program,clang,$(WARN) $(CLANG_MODEL) -ffp-contract=off $(VARIANT_FLAGS_$*) -O2, \
+		$(SRC),-lm)
 check-clang: $(TYPES:%=build/clang/rt-%)
 
 # The unit tests in every number type (each type's tolerances are in the tests).
@@ -89,10 +91,7 @@ MSAN_FLAGS = -fsanitize=memory -fsanitize-memory-track-origins -fno-omit-frame-p
 MSAN_BUILDS = build/msan/unit-tests build/msan/unit-tests-fixed build/msan/replay \
 	build/msan/replay-fixed build/msan/rt-fixed
 MSAN_TEST = $(if $(shell command -v $(MSAN_CC)),$(MSAN_BUILDS))
-# clang's linker cannot relax the medium model's references to MemorySanitizer's globals.
-MSAN_LINK = $(if $(HOST_MODEL),$(MSAN_NO_RELAX))
-MSAN_NO_RELAX = -Wl,--no-relax
-MSAN_CFLAGS = $(WARN) $(HOST_MODEL) $(MSAN_LINK) -ffp-contract=off $(MSAN_FLAGS) $(if $*,-DRT_REAL_FIXED)
+MSAN_CFLAGS = $(WARN) $(call host_model,$(MSAN_CC)) -ffp-contract=off $(MSAN_FLAGS) $(if $*,-DRT_REAL_FIXED)
 build/msan/unit-tests build/msan/unit-tests-fixed: build/msan/unit-tests%: $(SRC) $(TEST_SRC) \
 		$(HDR) $(TEST_HDR)
 	$(call whole-program,$(MSAN_CC),$(MSAN_CFLAGS) $(TEST_CAPACITIES) -Isrc,$(LIB_SRC) $(TEST_SRC),-lm)

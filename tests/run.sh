@@ -4,8 +4,9 @@
 #   unit tests (normal and ASan+UBSan builds), command-line tests, golden renders, the
 #   malformed and unusual scenes of tests/bad and tests/good (bad.sh), fixed point against
 #   the reference (fixed.sh) and the hard scenes against the visibility oracle in every
-#   number type (watertight.sh), the documentation against the program (docs.sh), and
-#   the tree's search against the search object by object (tree.sh).
+#   number type (watertight.sh), the documentation against the program (docs.sh), the
+#   programs' code free of load-time patches (textrel.sh), and the tree's search against
+#   the search object by object (tree.sh).
 cd "$(dirname "$0")/.." || exit 1
 . tests/lib.sh
 
@@ -73,6 +74,8 @@ else
 	echo "msan: skipped (no clang; MemorySanitizer needs it)"
 fi
 tally watertight "$(sh tests/watertight.sh 2>&1)"
+# No program's code is patched when it is loaded (the code model, Makefile).
+tally textrel "$(sh tests/textrel.sh 2>&1)"
 # The tree's search against the search object by object (no sanitizer: it is the answers
 # that are compared, and the sanitized builds run the same scenes above).
 tally tree "$(RT=./rt sh tests/tree.sh 2>&1)"
