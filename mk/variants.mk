@@ -37,11 +37,15 @@ VARIANT_CFLAGS = $(WARN) $(HOST_MODEL) -ffp-contract=off $(VARIANT_FLAGS_$*)
 variants: $(TYPES:%=build/rt-%)
 
 # The same strict warnings with clang (installed by tools/need if missing), every type.
+# Each is refused if its code would be patched when loaded (text relocations: the code
+# model, Makefile).
 CLANG_MODEL = $(call host_model,clang)
 build/clang/rt-%: $(SRC) $(HDR)
 	@sh tools/need clang
 	$(call whole-program,clang,$(WARN) $(CLANG_MODEL) -ffp-contract=off $(VARIANT_FLAGS_$*) -O2, \
 		$(SRC),-lm)
+	@if readelf -d $@ 2> /dev/null | grep -q TEXTREL; then \
+		echo "$@: text relocations (readelf -d shows TEXTREL)"; rm -f $@; exit 1; fi
 check-clang: $(TYPES:%=build/clang/rt-%)
 
 # The unit tests in every number type (each type's tolerances are in the tests).
