@@ -22,10 +22,12 @@ WARN = -std=c99 -pedantic -Wall -Wextra -Wshadow -Wdouble-promotion -Wstrict-pro
 # a position-independent program must patch when it is loaded (a text relocation: the
 # linker warns of it, and a hardened system refuses it), where its large model reaches
 # it through the GOT, at the same speed (SPD balls and teapot-s12, 7 alternating runs).
-# $(call host_model,COMPILER) is the model COMPILER needs; empty beyond x86-64.
-host_model = $(if $(filter x86_64-%,$(shell $(1) -dumpmachine 2>/dev/null)),$(if \
-	$(findstring clang,$(shell $(1) --version 2>/dev/null)),-mcmodel=large,-mcmodel=medium))
-HOST_MODEL := $(call host_model,$(CC))
+# The clang builds' model is known without asking clang, which the clang targets install
+# only as they run (tools/need). Both are empty beyond x86-64.
+HOST_X86_64 := $(filter x86_64-%,$(shell $(CC) -dumpmachine 2>/dev/null))
+HOST_MODEL := $(if $(HOST_X86_64),$(if $(findstring clang,$(shell $(CC) --version 2>/dev/null)), \
+	      -mcmodel=large,-mcmodel=medium))
+CLANG_MODEL := $(if $(HOST_X86_64),-mcmodel=large)
 # No FMA contraction: the hard cases are decided by rounding (numerics.md section 9).
 RT_CFLAGS = $(WARN) $(HOST_MODEL) -ffp-contract=off -MMD -MP
 LDLIBS ?=

@@ -8,7 +8,7 @@ FUZZ_SECONDS ?= 60
 FUZZ_TYPE ?= double
 FUZZ_CC ?= clang
 FUZZ_FLAGS = -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined -g -O1 \
-	     $(call host_model,$(FUZZ_CC))
+	     $(CLANG_MODEL)
 build/fuzz/fuzz-scene-%: $(LIB_SRC) tests/fuzz/fuzz_scene.c $(HDR)
 	@sh tools/need $(FUZZ_CC) clang
 	$(call whole-program,$(FUZZ_CC),-std=c99 -Wall -Wextra -Werror -ffp-contract=off $(FUZZ_FLAGS) \

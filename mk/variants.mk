@@ -39,7 +39,6 @@ variants: $(TYPES:%=build/rt-%)
 # The same strict warnings with clang (installed by tools/need if missing), every type.
 # Each is refused if its code would be patched when loaded (text relocations: the code
 # model, Makefile).
-CLANG_MODEL = $(call host_model,clang)
 build/clang/rt-%: $(SRC) $(HDR)
 	@sh tools/need clang
 	$(call whole-program,clang,$(WARN) $(CLANG_MODEL) -ffp-contract=off $(VARIANT_FLAGS_$*) -O2, \
@@ -95,7 +94,7 @@ MSAN_FLAGS = -fsanitize=memory -fsanitize-memory-track-origins -fno-omit-frame-p
 MSAN_BUILDS = build/msan/unit-tests build/msan/unit-tests-fixed build/msan/replay \
 	build/msan/replay-fixed build/msan/rt-fixed
 MSAN_TEST = $(if $(shell command -v $(MSAN_CC)),$(MSAN_BUILDS))
-MSAN_CFLAGS = $(WARN) $(call host_model,$(MSAN_CC)) -ffp-contract=off $(MSAN_FLAGS) $(if $*,-DRT_REAL_FIXED)
+MSAN_CFLAGS = $(WARN) $(CLANG_MODEL) -ffp-contract=off $(MSAN_FLAGS) $(if $*,-DRT_REAL_FIXED)
 build/msan/unit-tests build/msan/unit-tests-fixed: build/msan/unit-tests%: $(SRC) $(TEST_SRC) \
 		$(HDR) $(TEST_HDR)
 	$(call whole-program,$(MSAN_CC),$(MSAN_CFLAGS) $(TEST_CAPACITIES) -Isrc,$(LIB_SRC) $(TEST_SRC),-lm)

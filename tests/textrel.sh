@@ -1,9 +1,9 @@
 #!/bin/sh
 # textrel.sh - every program `make test` built loads without its code being patched: no
 # text relocations (TEXTREL in `readelf -d`), which the linker warns of and hardened
-# systems refuse to load. clang's medium code model made them (the Makefile's
-# host_model says how it is avoided). Run from the repository root after `make test`'s
-# builds; ends with `N passed, N failed`. See LICENSE for copyright and licence.
+# systems refuse to load. clang's medium code model made them (the Makefile's HOST_MODEL
+# and CLANG_MODEL say how they are avoided). Run from the repository root after `make
+# test`'s builds; ends with `N passed, N failed`. See LICENSE for copyright and licence.
 
 . tests/lib.sh
 
