@@ -313,25 +313,23 @@ static int sah_split(int first, int count, const item_bounds *node, int *axis_ou
 		if (bin_count[best_axis][i])
 			points_grow(&child[i > best_plane].lo, &child[i > best_plane].hi,
 				    &bin_lo[best_axis][i], &bin_hi[best_axis][i]);
-	/* Partition: objects whose centre falls in bins 0..best_plane go left. Each object
-	 * is looked at once, here or before it is swapped to the right. */
+	/* Partition: objects whose centre falls in bins 0..best_plane go left, in one pass
+	 * without a branch on the side (each item swapped with the first right one, which
+	 * stays where it is when the item is right too): which side an object falls on is a
+	 * coin toss the processor cannot predict, and a branch on it made this partition as
+	 * slow as the binning (a million spheres' build 0.94 s, now 0.83 s). */
 	{
-		int j = first + count - 1;
-		i = first;
-		while (i <= j) {
-			bvh_point centre = item_centre(&items[i]);
-			int b = bin_at(&bins[best_axis], centre_get(centre, best_axis));
-			points_grow(&child[b > best_plane].clo, &child[b > best_plane].chi, &centre,
-				    &centre);
-			if (b <= best_plane) {
-				i++;
-			} else {
-				build_item swap = items[i];
-				items[i] = items[j];
-				items[j--] = swap;
-			}
+		int to = first;
+		for (i = first; i < first + count; i++) {
+			build_item item = items[i];
+			bvh_point centre = item_centre(&item);
+			int right = bin_at(&bins[best_axis], centre_get(centre, best_axis)) > best_plane;
+			points_grow(&child[right].clo, &child[right].chi, &centre, &centre);
+			items[i] = items[to];
+			items[to] = item;
+			to += !right;
 		}
-		left = i - first;
+		left = to - first;
 	}
 	*axis_out = best_axis;
 	return left > 0 && left < count ? left : 0;
@@ -384,12 +382,22 @@ static vec3 bvh_corner(const bvh_node *n, int side)
  * ones; the rest of the lanes are empty (a box inside out, which no ray enters). */
 static void wide_fill(bvh_tree *t, int w, const int *lane, int n);
 
+/* Half the area of binary node b's box. */
+static real2 lane_area(const bvh_tree *t, int b)
+{
+	const bvh_node *c = &t->nodes[b];
+	return box_half_area(bvh_corner(c, 0), bvh_corner(c, 1));
+}
+
 /* Collapses binary node b (with its subtree) into a new wide node; returns its number.
  * The lanes start as b's children, and the inner lane with the largest box is opened
- * into its two children until there are WIDE_LANES lanes or only leaves. */
+ * into its two children until there are WIDE_LANES lanes or only leaves. Each lane's
+ * area is worked out once, as it comes in (for each lane at every step, it was a third
+ * of a million spheres' collapse). */
 static int wide_collapse(bvh_tree *t, int b)
 {
-	int lane[WIDE_LANES], n = 0, w = t->wide_count++;
+	int lane[WIDE_LANES], n = 0, i, w = t->wide_count++;
+	real2 area[WIDE_LANES];
 	pages_ahead(t->wide, sizeof t->wide[0], (size_t)w, 1, BVH_WIDE_NODES);
 	if (t->nodes[b].count) {
 		lane[n++] = b;
@@ -397,21 +405,20 @@ static int wide_collapse(bvh_tree *t, int b)
 		lane[n++] = t->nodes[b].start;
 		lane[n++] = t->nodes[b].start + 1;
 	}
+	for (i = 0; i < n; i++)
+		area[i] = lane_area(t, lane[i]);
 	while (n < WIDE_LANES) {
-		int i, widest = -1;
-		real2 widest_area = 0;
-		for (i = 0; i < n; i++) {
-			const bvh_node *c = &t->nodes[lane[i]];
-			real2 area = box_half_area(bvh_corner(c, 0), bvh_corner(c, 1));
-			if (!c->count && (widest < 0 || area > widest_area)) {
+		int widest = -1;
+		for (i = 0; i < n; i++)
+			if (!t->nodes[lane[i]].count && (widest < 0 || area[i] > area[widest]))
 				widest = i;
-				widest_area = area;
-			}
-		}
 		if (widest < 0)
 			break;
-		lane[n++] = t->nodes[lane[widest]].start + 1;
+		lane[n] = t->nodes[lane[widest]].start + 1;
 		lane[widest] = t->nodes[lane[widest]].start;
+		area[n] = lane_area(t, lane[n]);
+		area[widest] = lane_area(t, lane[widest]);
+		n++;
 	}
 	wide_fill(t, w, lane, n);
 	return w;
