@@ -20,33 +20,66 @@
  * objects take a few thousand requests. */
 #define PAGES_CHUNK ((size_t)65536)
 
+/* A huge page (x86-64 and arm64 Linux): a range asked for that holds whole, aligned huge
+ * pages gets them where the system gives them (MADV_HUGEPAGE, with transparent huge pages
+ * set to "madvise" or "always"), and so does an array growing past its first HUGE_PAGE
+ * bytes, a huge page at a time (pages_ahead). On a virtual
+ * machine whose memory the host backs lazily, writing 256 MB of fresh bss took 0.7 s in
+ * small pages as they fault, 0.4 s asked for at once, 0.03 s in huge pages: a million
+ * objects' arrays (items, nodes, wide nodes, object records) were a third of their build.
+ * Small arrays stay on small pages: an array holds at most one huge page it does not use. */
+#define HUGE_PAGE ((size_t)2 << 20)
+
+/* How many bytes from address a up to the next multiple of unit (0 when a is one). */
+static size_t to_boundary(const void *a, size_t unit)
+{
+	return (size_t)(unit - (uintptr_t)a % unit) % unit;
+}
+
 void pages_prepare(void *start, size_t bytes)
 {
 	static size_t page;
-	size_t lead;
+	unsigned char *from = start;
+	size_t lead, huge_lead = to_boundary(start, HUGE_PAGE);
 	if (bytes == 0)
 		return;
 	if (!page) {
 		long size = sysconf(_SC_PAGESIZE);
 		page = size > 0 ? (size_t)size : 4096u;
 	}
+#ifdef MADV_HUGEPAGE
+	/* The whole huge pages in the range, before their pages exist: a huge page is only
+	 * made for a range with none yet. */
+	if (bytes > huge_lead && bytes - huge_lead >= HUGE_PAGE)
+		(void)madvise(from + huge_lead, (bytes - huge_lead) / HUGE_PAGE * HUGE_PAGE,
+			      MADV_HUGEPAGE);
+#endif
 	/* Outwards to whole pages: a page that holds any byte of the range is part of the
 	 * same writable mapping, and preparing it writes nothing. */
-	lead = (size_t)((uintptr_t)start & (page - 1));
-	(void)madvise((unsigned char *)start - lead, (lead + bytes + page - 1) & ~(page - 1),
-		      MADV_POPULATE_WRITE);
+	lead = (page - to_boundary(start, page)) % page;
+	(void)madvise(from - lead, (lead + bytes + page - 1) & ~(page - 1), MADV_POPULATE_WRITE);
 }
 
 void pages_ahead(void *array, size_t size, size_t first, size_t count, size_t capacity)
 {
 	size_t per = PAGES_CHUNK / size + 1; /* elements a chunk */
 	size_t from = first ? (first - 1) / per + 1 : 0, to, end;
+	unsigned char *start, *stop, *limit = (unsigned char *)array + capacity * size;
 	if (count == 0)
 		return;
 	to = (first + count - 1) / per;
 	if (from > to)
 		return;
 	end = (to + 1) * per < capacity ? (to + 1) * per : capacity;
-	pages_prepare((unsigned char *)array + from * per * size, (end - from * per) * size);
+	start = (unsigned char *)array + from * per * size;
+	stop = (unsigned char *)array + end * size;
+	/* Past the array's first huge page, up to the next huge page's boundary: the whole
+	 * huge page after it is then fresh when a chunk first enters it (the chunks that
+	 * follow within it ask again for pages that are there, which costs little). */
+	if (from * per * size >= HUGE_PAGE) {
+		size_t past = to_boundary(stop, HUGE_PAGE);
+		stop = past < (size_t)(limit - stop) ? stop + past : limit;
+	}
+	pages_prepare(start, (size_t)(stop - start));
 }
 #endif

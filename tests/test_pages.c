@@ -14,25 +14,67 @@
 #include <unistd.h>
 
 #define ARRAY_BYTES ((size_t)1 << 20)
+#define HUGE ((size_t)2 << 20)	      /* pages.c's huge page */
+#define BIG_BYTES ((size_t)6 << 20) /* an array that grows past its first huge page */
 
 /* Written only through the requests below: bss that nothing else touches, of which the
- * array is the 1 MiB from the first page boundary on (pages of up to 64 KiB). */
+ * array is the 1 MiB from the first page boundary on (pages of up to 64 KiB), and the big
+ * array 6 MiB from 12 KiB past a huge page's boundary (so that its own offsets and the
+ * huge pages' boundaries differ). */
 static unsigned char untouched[(1 << 20) + 65536];
-static unsigned char *array;
+static unsigned char untouched_big[(6 << 20) + (2 << 20) + 65536];
+static unsigned char *array, *big;
 
-/* How many pages holding bytes [from, to) of the array are resident. */
-static long resident(size_t from, size_t to)
+/* How many pages holding bytes [from, to) of the array at base are resident. */
+static long resident_in(unsigned char *base, size_t from, size_t to)
 {
-	static unsigned char vec[ARRAY_BYTES / 4096];
+	static unsigned char vec[BIG_BYTES / 4096 + 16];
 	size_t page = (size_t)sysconf(_SC_PAGESIZE), first = from / page * page, i;
 	size_t length = (to - first + page - 1) / page * page;
 	long count = 0;
 	memset(vec, 0, sizeof vec); /* MemorySanitizer does not see the kernel's writes */
-	if (length / page > sizeof vec || mincore(array + first, length, vec) != 0)
+	if (length / page > sizeof vec || mincore(base + first, length, vec) != 0)
 		return -1;
 	for (i = 0; i < length / page; i++)
 		count += vec[i] & 1;
 	return count;
+}
+
+static long resident(size_t from, size_t to)
+{
+	return resident_in(array, from, to);
+}
+
+/* An array of BIG_BYTES growing past its first huge page: up to it, a chunk at a time as
+ * the small array; past it, to the next huge page's boundary at once, and no further. */
+static void check_big_array(size_t page)
+{
+	const size_t size = 16, capacity = BIG_BYTES / 16, chunk = 65536 / 16 + 1;
+	size_t skew = 3 * page, boundary, at;
+	big = untouched_big + (HUGE - (size_t)((uintptr_t)untouched_big % HUGE)) % HUGE + skew;
+	boundary = 2 * HUGE - skew; /* the big array's offset of its third huge page's start */
+	pages_ahead(big, size, 0, 1, capacity);
+	CHECK_INT(resident_in(big, 0, 65536), (long)(65536 / page));
+	CHECK_INT(resident_in(big, 131072, HUGE), 0);
+	/* A write whose chunk starts past the first HUGE bytes: that chunk and the rest of
+	 * the huge page it is in, up to the boundary, and nothing of the huge page after. */
+	at = (HUGE / (chunk * size) + 1) * chunk; /* the first chunk starting past HUGE */
+	pages_ahead(big, size, at, 1, capacity);
+	CHECK_INT(resident_in(big, at * size, boundary), (long)(boundary / page - at * size / page));
+	CHECK_INT(resident_in(big, boundary, boundary + 65536), 0);
+	/* The next chunks inside it ask again for what is there: nothing new. */
+	pages_ahead(big, size, at + chunk, 2 * chunk, capacity);
+	CHECK_INT(resident_in(big, boundary, boundary + HUGE), 0);
+	/* The first chunk to cross the boundary takes the whole next huge page. */
+	at = (boundary / size / chunk) * chunk;
+	pages_ahead(big, size, at, 1, capacity);
+	CHECK_INT(resident_in(big, boundary, boundary + HUGE), (long)(HUGE / page));
+	CHECK_INT(resident_in(big, boundary + HUGE, boundary + HUGE + 65536), 0);
+	/* The array's end bounds the last chunk's request, huge page or not. */
+	at = (capacity - 1) / chunk * chunk;
+	pages_ahead(big, size, at, capacity - at, capacity);
+	CHECK_INT(resident_in(big, BIG_BYTES, BIG_BYTES + page), 0);
+	CHECK_INT(resident_in(big, BIG_BYTES - page, BIG_BYTES), 1);
 }
 
 void suite_pages(void)
@@ -71,6 +113,7 @@ void suite_pages(void)
 	pages_ahead(array, size, 2 * chunk, capacity - 2 * chunk, capacity);
 	CHECK_INT(resident(0, ARRAY_BYTES), all);
 	CHECK_INT(resident(ARRAY_BYTES, ARRAY_BYTES + page), 0);
+	check_big_array(page);
 }
 #else
 void suite_pages(void)
