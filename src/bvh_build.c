@@ -10,7 +10,16 @@
 #include "pages.h"
 
 
-#define BINS 16    /* SAH candidate planes per axis, minus one */
+/* SAH candidate planes per axis, minus one: BINS for most nodes, FINE_BINS (floating
+ * types) for nodes of more than FINE_BINS_FROM objects. With 32 bins everywhere SPD
+ * teapot-s12's searches took 0.959 of the instructions (its triangles, all of a size,
+ * are parted better near the top of the tree; balls 0.994, the other SPD scenes within
+ * 0.3 %), but sweeping the extra bins of every small node made its build 7 ms -> 10 ms;
+ * above 256 objects the searches gain as much (0.959) and the build costs no more than a
+ * run can show. Fixed point keeps BINS, so its tree and its images stay as they were. */
+#define BINS 16
+#define FINE_BINS (BVH_WIDE ? 32 : BINS)
+#define FINE_BINS_FROM 256
 #define MAX_LEAF 4 /* a leaf holds at most this many objects when it can be split */
 
 RT_STATIC_ASSERT(node_count_fits, 2 * (long)RT_MAX_OBJECTS < 2147483647L);
@@ -105,37 +114,41 @@ static item_bounds bounds_of(int first, int count)
 	return b;
 }
 
-/* How one axis's centres fall into BINS bins: from the lowest centre `lo` over `extent`,
- * by a product with `scale` = BINS / extent in floating types (the same product in the
- * binning and in the partition, so both put an item in the same bin), by the quotient in
- * fixed point (whose product rounds too coarsely). extent 0: one bin, not split. */
+/* How one axis's centres fall into `count` bins: from the lowest centre `lo` over
+ * `extent`, by a product with `scale` = count / extent in floating types (the same
+ * product in the binning and in the partition, so both put an item in the same bin), by
+ * the quotient in fixed point (whose product rounds too coarsely). extent 0: one bin, not
+ * split. */
 typedef struct {
 	centre_coord lo, extent, scale;
+	int count;
 } axis_bins;
 
-static axis_bins axis_bins_make(bvh_point clo, bvh_point chi, int axis)
+static axis_bins axis_bins_make(bvh_point clo, bvh_point chi, int axis, int count)
 {
 	axis_bins a;
+	a.count = count;
 	a.lo = centre_get(clo, axis);
 	a.extent = centre_get(chi, axis) - a.lo;
 #if BVH_WIDE
-	a.scale = a.extent > 0.0f ? (float)BINS / a.extent : 0.0f;
+	a.scale = a.extent > 0.0f ? (float)count / a.extent : 0.0f;
 #else
 	a.scale = 0;
 #endif
 	return a;
 }
 
-/* The bin (0 .. BINS-1) of centre c. The comparisons keep a NaN or out-of-range value
+/* The bin (0 .. a->count - 1) of centre c. The comparisons keep a NaN or out-of-range value
  * (centres beyond float's range) from reaching the int conversion. */
 static inline int bin_at(const axis_bins *a, centre_coord c)
 {
 #if BVH_WIDE
 	float b = (c - a->lo) * a->scale;
-	return b >= 0.0f ? (b < (float)BINS ? (int)b : BINS - 1) : 0;
+	return b >= 0.0f ? (b < (float)a->count ? (int)b : a->count - 1) : 0;
 #else
-	real b = real_mul(real_div(c - a->lo, a->extent), real_from_int(BINS));
-	return b >= REAL_C(0.0) ? (b < real_from_int(BINS) ? real_to_int(b) : BINS - 1) : 0;
+	real b = real_mul(real_div(c - a->lo, a->extent), real_from_int(a->count));
+	return b >= REAL_C(0.0) ? (b < real_from_int(a->count) ? real_to_int(b) : a->count - 1)
+				: 0;
 #endif
 }
 
@@ -225,7 +238,7 @@ static int sorted_split(int first, int count, const item_bounds *node, int *axis
 }
 
 /* Chooses the split of items[first .. first+count), whose bounds are `node`, with the
- * lowest SAH cost over BINS bins of centres per axis and partitions the objects by it.
+ * lowest SAH cost over the bins of centres on each axis and partitions the objects by it.
  * Returns the number moved to the left, or 0 when a leaf is cheaper and small enough, or
  * when all centres coincide; child[0] and child[1] get the two sides' bounds (the bins'
  * boxes and the centres met in the partition: no pass of their own). */
@@ -235,14 +248,15 @@ static int sah_split(int first, int count, const item_bounds *node, int *axis_ou
 	real2 node_area = box_half_area(point_vec(node->lo), point_vec(node->hi));
 	real best_cost;
 	axis_bins bins[3];
-	int bin_count[3][BINS];
-	bvh_point bin_lo[3][BINS], bin_hi[3][BINS];
+	int bin_count[3][FINE_BINS];
+	bvh_point bin_lo[3][FINE_BINS], bin_hi[3][FINE_BINS];
 	int best_axis = -1, best_plane = 0, axis, i, left;
+	int bins_used = count > FINE_BINS_FROM ? FINE_BINS : BINS;
 	if (count <= SORTED_MAX)
 		return sorted_split(first, count, node, axis_out, child);
 	for (axis = 0; axis < 3; axis++) {
-		bins[axis] = axis_bins_make(node->clo, node->chi, axis);
-		for (i = 0; i < BINS; i++) {
+		bins[axis] = axis_bins_make(node->clo, node->chi, axis, bins_used);
+		for (i = 0; i < bins_used; i++) {
 			bin_count[axis][i] = 0;
 			points_empty(&bin_lo[axis][i], &bin_hi[axis][i]);
 		}
@@ -263,15 +277,15 @@ static int sah_split(int first, int count, const item_bounds *node, int *axis_ou
 	best_cost = REAL_MAX;
 	for (axis = 0; axis < 3; axis++) {
 		bvh_point run_lo, run_hi;
-		real2 right_area[BINS];
-		int right_count[BINS], n;
+		real2 right_area[FINE_BINS];
+		int right_count[FINE_BINS], n;
 		if (!(bins[axis].extent > 0))
 			continue;
 		/* Sweep from the right, then from the left, pricing each plane between bins.
 		 * An empty bin's box is inside out (+MAX..-MAX) and must not be grown by. */
 		points_empty(&run_lo, &run_hi);
 		n = 0;
-		for (i = BINS - 1; i > 0; i--) {
+		for (i = bins_used - 1; i > 0; i--) {
 			n += bin_count[axis][i];
 			if (bin_count[axis][i])
 				points_grow(&run_lo, &run_hi, &bin_lo[axis][i], &bin_hi[axis][i]);
@@ -283,7 +297,7 @@ static int sah_split(int first, int count, const item_bounds *node, int *axis_ou
 		}
 		points_empty(&run_lo, &run_hi);
 		n = 0;
-		for (i = 0; i < BINS - 1; i++) {
+		for (i = 0; i < bins_used - 1; i++) {
 			real cost;
 			n += bin_count[axis][i];
 			if (bin_count[axis][i])
@@ -309,7 +323,7 @@ static int sah_split(int first, int count, const item_bounds *node, int *axis_ou
 		points_empty(&child[i].lo, &child[i].hi);
 		points_empty(&child[i].clo, &child[i].chi);
 	}
-	for (i = 0; i < BINS; i++)
+	for (i = 0; i < bins_used; i++)
 		if (bin_count[best_axis][i])
 			points_grow(&child[i > best_plane].lo, &child[i > best_plane].hi,
 				    &bin_lo[best_axis][i], &bin_hi[best_axis][i]);
