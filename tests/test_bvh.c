@@ -805,6 +805,55 @@ static void test_transmittance_order(void)
 }
 #endif
 
+#if RT_USE_BVH && BVH_WIDE
+/* Whether f is x rounded outwards to float, and no further: up, f >= x and the float
+ * below f is below x; down, the mirror. */
+static int outward_and_tight(real x, int up, float f)
+{
+	if (up)
+		return (real)f >= x && (real)nextafterf(f, -INFINITY) < x;
+	return (real)f <= x && (real)nextafterf(f, INFINITY) > x;
+}
+
+/* float_outward (the tree's float corners), in both directions, for 0, the subnormals,
+ * exact floats, values between floats and beyond float's range: the box of a corner is
+ * too big by at most one float step and never too small. */
+static void test_float_outward(void)
+{
+	static const double special[] = {0.0, -0.0, 1.0, -1.0, 1e-45, 1.4e-45, 2.1e-45, 1e-46,
+					 1.1754943e-38, 3.4028234663852886e38, 3.4028235e38, 1e39,
+					 0.1, -0.1, 1.0 + 1e-12, 16777217.0, -16777217.0};
+	unsigned long state = 12345;
+	long tested = 0, failures = 0;
+	int i, up;
+	for (i = 0; i < 40000; i++) {
+		real x;
+		if (i < (int)(sizeof special / sizeof special[0])) {
+			x = (real)special[i];
+		} else {
+			/* A random 53-bit mantissa at a random scale from 2^-160 to 2^140. */
+			double m;
+			state = state * 6364136223846793005UL + 1442695040888963407UL;
+			m = (double)(state >> 11) / 9007199254740992.0;
+			x = (real)ldexp(0.5 + 0.5 * m, (int)((state >> 3) % 301) - 160);
+			if (state & 1)
+				x = -x;
+		}
+		/* In float, values beyond its range are infinite (and a box is finite). */
+		if (!(x - x == 0))
+			x = (real)FLT_MAX;
+		for (up = 0; up < 2; up++) {
+			tested++;
+			failures += !outward_and_tight(x, up, float_outward(x, up));
+			tested++;
+			failures += !outward_and_tight(-x, up, float_outward(-x, up));
+		}
+	}
+	CHECK_INT(tested, 160000);
+	CHECK_INT(failures, 0);
+}
+#endif
+
 void suite_bvh(void)
 {
 #if RT_USE_BVH
@@ -817,6 +866,9 @@ void suite_bvh(void)
 	test_transmittance_order();
 	test_cut_cones();
 	test_long_cone_pieces();
+#if BVH_WIDE
+	test_float_outward();
+#endif
 #if INSIDE_LISTS
 	test_inside_lists();
 #endif
