@@ -138,8 +138,8 @@ static axis_bins axis_bins_make(bvh_point clo, bvh_point chi, int axis, int coun
 	return a;
 }
 
-/* The bin (0 .. a->count - 1) of centre c. The comparisons keep a NaN or out-of-range value
- * (centres beyond float's range) from reaching the int conversion. */
+/* The bin (0 .. a->count - 1) of centre c. The comparisons keep a NaN or out-of-range
+ * value (centres beyond float's range) from reaching the int conversion. */
 static inline int bin_at(const axis_bins *a, centre_coord c)
 {
 #if BVH_WIDE
@@ -406,8 +406,8 @@ static real2 lane_area(const bvh_tree *t, int b)
 /* Collapses binary node b (with its subtree) into a new wide node; returns its number.
  * The lanes start as b's children, and the inner lane with the largest box is opened
  * into its two children until there are WIDE_LANES lanes or only leaves. Each lane's
- * area is worked out once, as it comes in (for each lane at every step, it was a third
- * of a million spheres' collapse). */
+ * area is worked out once, as it comes in (worked out for every lane at every step, the
+ * areas were nearly a third of the collapse's instructions). */
 static int wide_collapse(bvh_tree *t, int b)
 {
 	int lane[WIDE_LANES], n = 0, i, w = t->wide_count++;

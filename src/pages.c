@@ -23,11 +23,11 @@
 /* A huge page (x86-64 and arm64 Linux): a range asked for that holds whole, aligned huge
  * pages gets them where the system gives them (MADV_HUGEPAGE, with transparent huge pages
  * set to "madvise" or "always"), and so does an array growing past its first HUGE_PAGE
- * bytes, a huge page at a time (pages_ahead). On a virtual
- * machine whose memory the host backs lazily, writing 256 MB of fresh bss took 0.7 s in
- * small pages as they fault, 0.4 s asked for at once, 0.03 s in huge pages: a million
- * objects' arrays (items, nodes, wide nodes, object records) were a third of their build.
- * Small arrays stay on small pages: an array holds at most one huge page it does not use. */
+ * bytes, a huge page at a time (pages_ahead). On a virtual machine whose memory the host
+ * backs lazily, writing 256 MB of fresh bss took 0.7 s in small pages as they fault, 0.4 s
+ * asked for at once, 0.03 s in huge pages: a million objects' arrays (items, nodes, wide
+ * nodes, object records) were a third of their build. Small arrays stay on small pages:
+ * an array holds at most one huge page it does not use. */
 #define HUGE_PAGE ((size_t)2 << 20)
 
 /* How many bytes from address a up to the next multiple of unit (0 when a is one). */
