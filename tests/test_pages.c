@@ -1,6 +1,7 @@
 /* test_pages.c - pages.c's requests, seen by the kernel: which pages of a static array
- * are resident (mincore) before and after pages_ahead and pages_prepare. Linux only; on
- * other hosts the requests are no-ops and there is nothing to see.
+ * are resident (mincore) before and after pages_ahead and pages_prepare, and which
+ * ranges are advised to be huge pages (/proc/self/smaps). Linux only; on other hosts the
+ * requests are no-ops and there is nothing to see.
  * See LICENSE for copyright and licence. */
 #define _DEFAULT_SOURCE 1 /* mincore */
 
@@ -9,6 +10,7 @@
 
 #if defined(__linux__) && !defined(RT_NO_PAGES_AHEAD)
 #include <stdint.h>
+#include <stdio.h>
 #include <string.h>
 #include <sys/mman.h>
 #include <unistd.h>
@@ -45,6 +47,52 @@ static long resident(size_t from, size_t to)
 	return resident_in(array, from, to);
 }
 
+/* Whether the mapping that holds address a is advised to be huge pages (the flag "hg" of
+ * its VmFlags in /proc/self/smaps), with its range in *from, *to; -1 where that cannot be
+ * read. madvise splits a mapping at the advised range's ends, so the range is the
+ * advised one (merged with any advised range next to it). */
+static int huge_advised(const unsigned char *a, uintptr_t *from, uintptr_t *to)
+{
+	FILE *maps = fopen("/proc/self/smaps", "r");
+	char line[512];
+	int holds = 0, advised = -1;
+	if (!maps)
+		return -1;
+	while (advised < 0 && fgets(line, sizeof line, maps)) {
+		unsigned long long lo, hi;
+		if (sscanf(line, "%llx-%llx ", &lo, &hi) == 2) {
+			holds = (uintptr_t)a >= lo && (uintptr_t)a < hi;
+			if (holds) {
+				*from = (uintptr_t)lo;
+				*to = (uintptr_t)hi;
+			}
+		} else if (holds && strncmp(line, "VmFlags:", 8) == 0) {
+			advised = strstr(line, " hg") != NULL;
+		}
+	}
+	fclose(maps);
+	return advised;
+}
+
+/* The big array's advice: the one whole huge page its requests entered fresh (the third
+ * from the aligned start, at `boundary`), and nothing before or after it. */
+static void check_big_advice(size_t boundary)
+{
+	uintptr_t from = 0, to = 0;
+	int advised = huge_advised(big + boundary, &from, &to);
+	if (advised < 0 || access("/sys/kernel/mm/transparent_hugepage", F_OK) != 0) {
+		printf("pages: huge-page advice not checked (no /proc/self/smaps or no transparent "
+		       "huge pages)\n");
+		return;
+	}
+	CHECK_INT(advised, 1);
+	CHECK(from == (uintptr_t)(big + boundary));
+	CHECK(to == (uintptr_t)(big + boundary + HUGE));
+	CHECK_INT(huge_advised(big, &from, &to), 0);
+	CHECK_INT(huge_advised(big + boundary + HUGE, &from, &to), 0);
+	CHECK_INT(huge_advised(array, &from, &to), 0);
+}
+
 /* An array of BIG_BYTES growing past its first huge page: up to it, a chunk at a time as
  * the small array; past it, to the next huge page's boundary at once, and no further. */
 static void check_big_array(size_t page)
@@ -53,6 +101,10 @@ static void check_big_array(size_t page)
 	size_t skew = 3 * page, boundary, at;
 	big = untouched_big + (HUGE - (size_t)((uintptr_t)untouched_big % HUGE)) % HUGE + skew;
 	boundary = 2 * HUGE - skew; /* the big array's offset of its third huge page's start */
+	/* Small pages unless pages.c asks otherwise, as where transparent huge pages are set
+	 * to "madvise" (under "always" a first write would fault in a whole huge page, and
+	 * the counts below would be another system's). */
+	(void)madvise(big, BIG_BYTES, MADV_NOHUGEPAGE);
 	pages_ahead(big, size, 0, 1, capacity);
 	CHECK_INT(resident_in(big, 0, 65536), (long)(65536 / page));
 	CHECK_INT(resident_in(big, 131072, HUGE), 0);
@@ -75,6 +127,7 @@ static void check_big_array(size_t page)
 	pages_ahead(big, size, at, capacity - at, capacity);
 	CHECK_INT(resident_in(big, BIG_BYTES, BIG_BYTES + page), 0);
 	CHECK_INT(resident_in(big, BIG_BYTES - page, BIG_BYTES), 1);
+	check_big_advice(boundary);
 }
 
 void suite_pages(void)
@@ -83,6 +136,7 @@ void suite_pages(void)
 	size_t page = (size_t)sysconf(_SC_PAGESIZE);
 	long all = (long)(ARRAY_BYTES / page);
 	array = untouched + (page - (size_t)((uintptr_t)untouched & (page - 1))) % page;
+	(void)madvise(array, ARRAY_BYTES, MADV_NOHUGEPAGE); /* as in check_big_array */
 	/* A kernel before Linux 5.14 refuses the request (and rt's pages fault one by one,
 	 * as they always did): nothing to see. The probe is the array's last page. */
 	if (madvise(array + ARRAY_BYTES - page, page, MADV_POPULATE_WRITE) != 0) {
