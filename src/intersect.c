@@ -75,12 +75,14 @@ void object_origin_term(const object *o, vec3 origin, origin_term *k)
 	}
 }
 
-void origin_terms_init(const scene *s, vec3 origin, origin_terms *k)
+void origin_terms_init(const scene *s, vec3 origin, int count, origin_terms *k)
 {
 	int i;
+	if (count > s->object_count)
+		count = s->object_count;
 	k->candidates = ~(uint32_t)0;
-	pages_prepare(k->terms, (size_t)s->object_count * sizeof k->terms[0]);
-	for (i = 0; i < s->object_count; i++)
+	pages_prepare(k->terms, (size_t)count * sizeof k->terms[0]);
+	for (i = 0; i < count; i++)
 		object_origin_term(&s->objects[i], origin, &k->terms[i]);
 }
 
@@ -88,7 +90,7 @@ void origin_terms_plane(const scene *s, dir3 n, origin_terms *k)
 {
 	int i;
 	k->candidates = ~(uint32_t)0;
-	for (i = 0; i < s->object_count && i < 32; i++) {
+	for (i = 0; i < s->object_count && i < ORIGIN_PLANE_OBJECTS; i++) {
 		const object *o = &s->objects[i];
 		const vec3 *f = &k->terms[i].f;
 		real reach;
@@ -146,7 +148,7 @@ int scene_intersect_from(const accel *a, const ray *r, const origin_terms *k, in
 		int i;
 		for (i = 0; i < s->object_count; i++) {
 			/* Each hit shrinks tmax, so later objects only report nearer hits. */
-			if (i != skip && (i >= 32 || candidates >> i & 1) &&
+			if (i != skip && (i >= ORIGIN_PLANE_OBJECTS || candidates >> i & 1) &&
 			    shape_intersect(s, &s->objects[i], r, k ? &k->terms[i] : NULL, REAL_C(0.0),
 					    tmax, h)) {
 				tmax = h->t;

@@ -47,6 +47,9 @@ void object_origin_term(const object *o, vec3 origin, origin_term *k);
  * from which side it came). */
 int scene_intersect(const accel *a, const ray *r, real tmax, hit *h);
 
+/* The objects origin_terms_plane looks at: bits of a uint32_t. */
+#define ORIGIN_PLANE_OBJECTS 32
+
 /* Every object's terms that depend on the ray's origin alone (shape.h), for all rays
  * from one point: every eye ray starts at the camera. */
 typedef struct {
@@ -56,7 +59,10 @@ typedef struct {
 	uint32_t candidates;
 } origin_terms;
 
-void origin_terms_init(const scene *s, vec3 origin, origin_terms *k);
+/* Fills the terms of the first `count` objects (at most the scene's) for rays from
+ * `origin`: every object's for a search object by object, which uses them; the tree's
+ * search takes none, and its caller asks only for origin_terms_plane's. */
+void origin_terms_init(const scene *s, vec3 origin, int count, origin_terms *k);
 
 /* The rays that follow from k's origin all lie in the plane through it with unit normal
  * n (an image line's eye rays): spheres the plane misses are left out of their searches. */

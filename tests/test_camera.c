@@ -159,7 +159,7 @@ static void test_line_culling(void)
 	v = sc.camera;
 	if (!CHECK(camera_init(&c, &v, width, height) == NULL))
 		return;
-	origin_terms_init(&sc, c.eye, &terms);
+	origin_terms_init(&sc, c.eye, sc.object_count, &terms);
 	for (y = 0; y < height; y++) {
 		camera_line line = camera_line_at(&c, 2 * y + 1, 1);
 		origin_terms_plane(&sc, line.normal, &terms);
