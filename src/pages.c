@@ -56,7 +56,7 @@ void pages_prepare(void *start, size_t bytes)
 #endif
 	/* Outwards to whole pages: a page that holds any byte of the range is part of the
 	 * same writable mapping, and preparing it writes nothing. */
-	lead = (page - to_boundary(start, page)) % page;
+	lead = (size_t)((uintptr_t)start & (page - 1));
 	(void)madvise(from - lead, (lead + bytes + page - 1) & ~(page - 1), MADV_POPULATE_WRITE);
 }
 
