@@ -64,6 +64,56 @@ static int list_overlaps(inside_list *l, const scene *s, const bvh_tree *t, int 
 	return 1;
 }
 
+/* Where listed object o lies, seen from the centre of its solid's box [lo, hi]: the
+ * half-space of its bounding ball's far side from there (inside.h), less what rounding can
+ * move either side of the comparison inside_nearest makes. A sphere's ball is its own,
+ * grown by two of the pads the tree grows its box by: its hits are within a pad of it in
+ * each coordinate, so within sqrt(3) pads in any direction. Any other object's is the ball
+ * round its padded box. */
+static inside_reach reach_of(const scene *s, int o, vec3 lo, vec3 hi)
+{
+	const object *ob = &s->objects[o];
+	inside_reach reach;
+	vec3 ball, away, olo, ohi;
+	real radius, distance, size;
+	reach.toward = vec_make(REAL_C(0.0), REAL_C(0.0), REAL_C(0.0));
+	reach.beyond = REAL_C(-1.0);
+	if (ob->kind == SHAPE_SPHERE) {
+		if (!shape_bounds(s, ob, &olo, &ohi))
+			return reach;
+		ball = ob->u.sphere.center;
+		radius = real_fabs(ob->u.sphere.radius) + REAL_C(2.0) * box_rounding_pad(olo, ohi);
+	} else {
+		bvh_point plo, phi;
+		vec3 half;
+		if (bvh_object_pieces(s, o) != 1 || !bvh_object_box(s, o, &plo, &phi))
+			return reach;
+		olo = vec_make((real)plo.x, (real)plo.y, (real)plo.z);
+		ohi = vec_make((real)phi.x, (real)phi.y, (real)phi.z);
+		ball = vec_scale(vec_add(olo, ohi), REAL_C(0.5));
+		half = vec_scale(vec_sub(ohi, olo), REAL_C(0.5));
+		radius = real_mul(real_sqrt(vec_dot(half, half)),
+				  REAL_C(1.0) + REAL_C(8.0) * REAL_EPSILON);
+	}
+	away = vec_sub(ball, vec_scale(vec_add(lo, hi), REAL_C(0.5)));
+	distance = real_sqrt(vec_dot(away, away));
+	if (!(distance > REAL_C(0.0)) || !real_isfinite(distance))
+		return reach;
+	/* toward is unit to a few roundings, so a point of the ball lies at least
+	 * toward . ball - radius (1 + 4 epsilon) along it. The dot products of the ball's
+	 * centre here and of the two ends of a ray's way (within the solid's box, whose
+	 * coordinates' magnitudes sum to at most |lo|1 + |hi|1) each round by a few epsilon
+	 * of the sum of their terms' magnitudes: 32 epsilon of all of them covers both. */
+	reach.toward = vec_scale(away, REAL_C(1.0) / distance);
+	size = real_fabs(ball.x) + real_fabs(ball.y) + real_fabs(ball.z) + radius +
+	       REAL_C(2.0) * (real_fabs(lo.x) + real_fabs(lo.y) + real_fabs(lo.z) +
+			      real_fabs(hi.x) + real_fabs(hi.y) + real_fabs(hi.z));
+	reach.beyond = vec_dot(reach.toward, ball) -
+		       real_mul(radius, REAL_C(1.0) + REAL_C(4.0) * REAL_EPSILON) -
+		       real_mul(REAL_C(32.0) * REAL_EPSILON, size);
+	return reach;
+}
+
 void inside_build(inside_lists *l, const scene *s, const bvh_tree *t)
 {
 	int i;
@@ -83,8 +133,14 @@ void inside_build(inside_lists *l, const scene *s, const bvh_tree *t)
 		    bvh_object_pieces(s, i) != 1 || !bvh_object_box(s, i, &list->lo, &list->hi))
 			continue;
 		list->solid = i;
-		if (list_overlaps(list, s, t, i))
+		if (list_overlaps(list, s, t, i)) {
+			vec3 lo = vec_make((real)list->lo.x, (real)list->lo.y, (real)list->lo.z);
+			vec3 hi = vec_make((real)list->hi.x, (real)list->hi.y, (real)list->hi.z);
+			int k;
+			for (k = 0; k < list->count; k++)
+				list->reach[k] = reach_of(s, list->objects[k], lo, hi);
 			l->list_of[i] = ++l->list_count;
+		}
 	}
 }
 
@@ -127,6 +183,7 @@ int inside_nearest(const inside_lists *l, const scene *s, const bvh_tree *t, int
 		   const ray *r, int skip, real tmax, hit *h, int *found)
 {
 	const inside_list *list;
+	vec3 exit;
 	int i, k = l->list_of[solid];
 	if (k < 1 || k > l->list_count || solid == skip)
 		return 0;
@@ -140,10 +197,18 @@ int inside_nearest(const inside_lists *l, const scene *s, const bvh_tree *t, int
 		return 0;
 	h->object = solid;
 	tmax = h->t;
+	exit = h->point;
 	for (i = 0; i < t->unbounded_count; i++)
 		visit_nearest(s, t->index[i], r, skip, &tmax, h);
-	for (i = 0; i < list->count; i++)
+	for (i = 0; i < list->count; i++) {
+		/* The ray's way to the solid's exit (or less, past a nearer hit) meets the
+		 * listed object's half-space only if one of its ends lies in it. */
+		const inside_reach *reach = &list->reach[i];
+		if (vec_dot(reach->toward, r->origin) < reach->beyond &&
+		    vec_dot(reach->toward, exit) < reach->beyond)
+			continue;
 		visit_nearest(s, list->objects[i], r, skip, &tmax, h);
+	}
 	*found = 1;
 	return 1;
 }

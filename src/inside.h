@@ -16,14 +16,25 @@
 /* Solids with lists, at most: the others search the tree. */
 #define INSIDE_SOLIDS (RT_MAX_OBJECTS < 65536 ? RT_MAX_OBJECTS : 65536)
 
+/* Where a listed object lies, seen from its solid: wholly in the half-space
+ * toward . x >= beyond (its bounding ball's, rounding allowed for); toward 0 and beyond -1
+ * where no such plane is known (the object is always tested). A ray's way through the
+ * solid is a segment, which meets the half-space only if one of its ends does: touching
+ * glass spheres, each listed by the others' boxes, meet within a pad of one point. */
+typedef struct {
+	vec3 toward;
+	real beyond;
+} inside_reach;
+
 /* A solid's box, as the tree pads and rounds it, and the objects whose boxes overlap that
  * box grown by its padding once more (so that a hit point rounded a little outside the
- * box still has its object listed). */
+ * box still has its object listed), with where each lies. */
 typedef struct {
 	bvh_point lo, hi;
 	int solid;
 	int count;
 	int objects[INSIDE_MAX];
+	inside_reach reach[INSIDE_MAX];
 } inside_list;
 
 typedef struct {

@@ -4,6 +4,7 @@
 #include <math.h>
 #include <stdio.h>
 
+#include "box.h"
 #include "bvh.h"
 #include "intersect.h"
 #include "support.h"
@@ -628,6 +629,36 @@ static int compare_inside(const accel *tree, const accel *plain, const inside_li
 	return answered;
 }
 
+/* Compares `count` rays from inside sphere `solid` (centre c, radius r) aimed at points
+ * within 10^-3 to 10^-13 of `target` (scene units), through the solid's list l and
+ * object by object, as compare_inside does. */
+static void compare_aimed(const accel *tree, const accel *plain, const inside_lists *l,
+			  int solid, const double c[3], double r, const double target[3],
+			  int count, int *mismatches)
+{
+	double scale = test_double(s.camera.from.y) / -6.0;
+	int i, k;
+	for (i = 0; i < count; i++) {
+		vec3 origin = point_in_sphere(c, r, scale, 0);
+		double spread = pow(10.0, -test_random_range(3.0, 13.0)), d[3];
+		hit listed, one_by_one;
+		int found_list, found_each;
+		ray ray_in;
+		for (k = 0; k < 3; k++)
+			d[k] = (target[k] + spread * test_random_range(-1.0, 1.0)) * scale -
+			       test_double(k == 0 ? origin.x : k == 1 ? origin.y : origin.z);
+		ray_in.origin = origin;
+		ray_in.dir = dir_normalize(vec_make(test_real(d[0]), test_real(d[1]), test_real(d[2])));
+		if (!inside_nearest(l, accel_scene(tree), &tree->tree, solid, &ray_in, -1, REAL_FAR,
+				    &listed, &found_list))
+			found_list = scene_intersect_from(tree, &ray_in, NULL, -1, REAL_FAR, &listed);
+		found_each = scene_intersect_from(plain, &ray_in, NULL, -1, REAL_FAR, &one_by_one);
+		*mismatches += found_list != found_each ||
+			       (found_each && (listed.t != one_by_one.t ||
+					       listed.object != one_by_one.object));
+	}
+}
+
 /* Rays inside transmitting solids (glass spheres that overlap, touch and hold other
  * objects, a glass cylinder, a glass sphere crowded past INSIDE_MAX), some from the
  * surface along it, find the same nearest hit through the solid's list as object by
@@ -680,6 +711,39 @@ static void test_inside_lists(void)
 	mismatches = 0;
 	(void)compare_inside(tree, plain, &broken, 0, a, 1.0, 5000, &mismatches);
 	CHECK(mismatches > 20);
+	/* Spheres 1 and 2 touch at x = 2.3: each lists the other, and its reach (the half-space
+	 * sphere 1 lies in, seen from sphere 2) holds the contact point and not sphere 2's
+	 * centre, so that only rays whose way ends near the contact test sphere 1. Rays from
+	 * inside sphere 2 aimed at the contact point meet sphere 1 there at the distance they
+	 * leave sphere 2 (the lower index takes the tie): found through the list as object by
+	 * object; with the half-space moved a few pads towards sphere 1, or with sphere 1
+	 * never tested, not. */
+	if (CHECK(l->list_count >= 3) && CHECK(l->lists[2].solid == 2)) {
+		static const double contact[3] = {2.3, 0, 0};
+		double scale = test_double(s.camera.from.y) / -6.0;
+		const inside_list *two = &l->lists[2];
+		const inside_reach *reach = NULL;
+		for (i = 0; i < two->count; i++)
+			if (two->objects[i] == 1)
+				reach = &two->reach[i];
+		if (CHECK(reach != NULL)) {
+			vec3 at = vec_make(test_real(2.3 * scale), REAL_C(0.0), REAL_C(0.0));
+			vec3 centre = vec_make(test_real(3.1 * scale), REAL_C(0.0), REAL_C(0.0));
+			CHECK(vec_dot(reach->toward, at) >= reach->beyond);
+			CHECK(vec_dot(reach->toward, centre) < reach->beyond);
+			mismatches = 0;
+			compare_aimed(tree, plain, l, 2, c, 0.8, contact, 20000, &mismatches);
+			CHECK_INT(mismatches, 0);
+			broken = *l;
+			for (i = 0; i < broken.lists[2].count; i++)
+				if (broken.lists[2].objects[i] == 1)
+					broken.lists[2].reach[i].beyond +=
+						REAL_C(4.0) * box_rounding_pad(centre, centre);
+			mismatches = 0;
+			compare_aimed(tree, plain, &broken, 2, c, 0.8, contact, 20000, &mismatches);
+			CHECK(mismatches > 20);
+		}
+	}
 	if (CHECK(scene_of("inside-box.nff", "f 1 1 1 0 0 0 0.9 1.5\ns 0 0 0 1\nbox 2 2 2 3 3 3\n",
 			   &tree, &plain)))
 		CHECK_INT(tree->inside.list_count, 0);
