@@ -26,6 +26,7 @@ void lexer_read_blocks(lexer *lx, read_block_fn read_block)
 {
 	lx->read_block = read_block;
 	lx->buffered = lx->taken = 0;
+	lx->buffer[0] = '\0';
 }
 
 /* The next byte of the input through the block reader, or -1 at its end. */
@@ -34,10 +35,11 @@ static int next_buffered(lexer *lx)
 	if (lx->taken == lx->buffered) {
 		lx->buffered = lx->read_block(lx->ctx, lx->buffer, RT_READ_BUFFER);
 		lx->taken = 0;
-		if (lx->buffered <= 0) {
+		if (lx->buffered <= 0)
 			lx->buffered = 0;
+		lx->buffer[lx->buffered] = '\0';
+		if (lx->buffered == 0)
 			return -1;
-		}
 	}
 	return lx->buffer[lx->taken++];
 }
@@ -135,19 +137,12 @@ static int check_start(lexer *lx)
 }
 
 #if RT_READ_BUFFER
-/* The next token straight from the block buffer, where it and the spaces before it lie
- * wholly there: each space, tab and line feed before it taken as next_byte takes it (the
- * line count and the state give_back and a CR LF pair need), the token copied, and the
- * byte after it, a space, line end or comment, left in the buffer for the next call,
- * where the byte-by-byte path reads every delimiter twice (once to end the token, once
- * again after giving it back). Returns 1 with the token in lx->tok; 0 where that path
- * must go on (any other byte, a token at the buffer's end or too long), from a state it
- * would have reached itself: only whole spaces are taken, a token only when complete.
- * SPD teapot-s12's 184 k tokens took 230 instructions each in lexer_next. */
-static int next_buffered_token(lexer *lx)
+/* Takes the spaces, tabs and line feeds before the next token from the block buffer,
+ * each as next_byte takes it (the line count and the state give_back and a CR LF pair
+ * need). Returns 0 where the byte-by-byte path must take the byte it gave back. */
+static int take_buffered_spaces(lexer *lx)
 {
-	long at, end;
-	int n;
+	long at;
 	if (lx->pending != NO_BYTE) {
 		/* The delimiter the byte-by-byte path gave back: taken as it takes it. */
 		if (lx->pending != ' ' && lx->pending != '\t' && lx->pending != '\n')
@@ -161,29 +156,79 @@ static int next_buffered_token(lexer *lx)
 		count_byte(lx, c);
 	}
 	lx->taken = at;
-	/* The token's end, within RT_TOKEN_MAX bytes (a longer one is the other path's error). */
-	end = lx->buffered - at > RT_TOKEN_MAX ? at + RT_TOKEN_MAX : lx->buffered;
-	for (; at < end; at++) {
-		unsigned c = lx->buffer[at];
-		if (c - 0x21u > 0x7Eu - 0x21u || c == '#')
-			break;
-	}
-	n = (int)(at - lx->taken);
-	if (n == 0 || at == lx->buffered)
+	return 1;
+}
+
+/* Whether the n bytes at lx->taken are a whole token as the byte-by-byte path reads it:
+ * at most RT_TOKEN_MAX (a longer one is its error), and ended by a delimiter still in the
+ * buffer (a space, line end or comment), which is left there for the next call: the
+ * byte-by-byte path reads every delimiter twice, once to end the token and once again
+ * after giving it back. */
+static int ends_buffered_token(const lexer *lx, long n)
+{
+	long at = lx->taken + n;
+	int c;
+	if (n == 0 || n > RT_TOKEN_MAX || at >= lx->buffered)
 		return 0;
-	{
-		int c = lx->buffer[at];
-		if (c != ' ' && c != '\t' && c != '\n' && c != '\r' && c != '#')
-			return 0;
-	}
-	/* The token's first byte as next_byte takes it (no token byte ends a line). */
+	c = lx->buffer[at];
+	return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '#';
+}
+
+/* Takes the n bytes at lx->taken as the current token: its first byte as next_byte takes
+ * it (no token byte ends a line), the token copied. */
+static void take_buffered_token(lexer *lx, int n)
+{
 	count_byte(lx, lx->buffer[lx->taken]);
 	memcpy(lx->tok, lx->buffer + lx->taken, (size_t)n);
 	lx->tok[n] = '\0';
 	lx->tok_line = lx->line;
-	lx->taken = at;
+	lx->taken += n;
+}
+
+/* The next token straight from the block buffer, where it and the spaces before it lie
+ * wholly there. Returns 1 with the token in lx->tok; 0 where the byte-by-byte path must
+ * go on (any other byte, a token at the buffer's end or too long), from a state it would
+ * have reached itself: only whole spaces are taken, a token only when complete. SPD
+ * teapot-s12's 184 k tokens took 230 instructions each in lexer_next. */
+static int next_buffered_token(lexer *lx)
+{
+	long at;
+	if (!take_buffered_spaces(lx))
+		return 0;
+	for (at = lx->taken; at < lx->buffered; at++) {
+		unsigned c = lx->buffer[at];
+		if (c - 0x21u > 0x7Eu - 0x21u || c == '#')
+			break;
+	}
+	if (!ends_buffered_token(lx, at - lx->taken))
+		return 0;
+	take_buffered_token(lx, (int)(at - lx->taken));
 	return 1;
 }
+
+#if !REAL_FIXED
+/* The next token read as a number straight from the block buffer, where it is a short
+ * decimal (realtext.h) within the limits of a scene's numbers: the scan of its digits
+ * finds its end too (the NUL after the block stops it), where lexer_next found the token
+ * and real_from_text then scanned its copy. Returns 1 with the token taken as lexer_next
+ * takes it and its value in *out; 0, with only whole spaces taken, where lexer_next and
+ * real_from_text must read it (and say what is wrong with it). */
+static int next_buffered_number(lexer *lx, real *out)
+{
+	const char *token, *end;
+	real_decimal d;
+	if (!take_buffered_spaces(lx))
+		return 0;
+	token = (const char *)lx->buffer + lx->taken;
+	end = real_decimal_scan(token, &d);
+	if (!end || !ends_buffered_token(lx, end - token) || !real_from_decimal(&d, out) ||
+	    !(real_fabs(*out) <= REAL_INPUT_LIMIT))
+		return 0;
+	take_buffered_token(lx, (int)(end - token));
+	lx->have_tok = 1;
+	return 1;
+}
+#endif
 #endif
 
 int lexer_next(lexer *lx)
@@ -279,6 +324,13 @@ int lexer_read_value(lexer *lx, const char *what, int length, real *out)
 	static const char *const why[] = {"", " (not a finite number)", " (out of range)"};
 	int shift = length ? lx->length_shift : 0, status, out_of_range;
 	*out = REAL_C(0.0); /* defined even on failure (static analysis cannot see through fail) */
+#if RT_READ_BUFFER && !REAL_FIXED
+	if (!lx->pushed && !lx->at_start && lx->read_block && next_buffered_number(lx, out)) {
+		if (length)
+			lx->longest = real_max(lx->longest, real_fabs(*out));
+		return 1;
+	}
+#endif
 	if (!lexer_next_value(lx, what, 0))
 		return 0;
 	status = real_from_text(lx->tok, shift, out);

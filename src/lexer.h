@@ -44,7 +44,9 @@ typedef struct {
 	 * each byte was a tenth of reading a million spheres); read is then not used. */
 	read_block_fn read_block;
 	long buffered, taken; /* bytes in buffer; bytes of them already read */
-	unsigned char buffer[RT_READ_BUFFER];
+	/* The block, and a NUL after it (buffer[buffered]): a scan for a number's digits
+	 * stops there at the latest. */
+	unsigned char buffer[RT_READ_BUFFER + 1];
 #endif
 } lexer;
 

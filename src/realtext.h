@@ -43,34 +43,36 @@
 #define REAL_EXACT_POW10 22  /* 5^22 < 2^53 */
 #endif
 
-/* [+-]digits[.digits][e[+-]digits] read exactly into *out, or 0 when the token is not
- * of that form or not exact so (strtod then reads it). The digits are gathered as a
- * whole number in integer arithmetic and the power of ten comes from a table: the same
- * exact operands as a product built digit by digit, in 0.76 of the instructions (SPD
- * teapot-s12's 167 k numbers). */
-static inline int real_from_short_decimal(const char *c, real *out)
+/* A decimal as written: the value is whole / 10^scale, negated if negative; digits
+ * counts the digits of whole as written (leading zeros too). */
+typedef struct {
+	uint64_t whole; /* below 10^19 < 2^64 when it is used (REAL_EXACT_DIGITS) */
+	int digits, scale, negative;
+} real_decimal;
+
+/* Reads [+-]digits[.digits][e[+-]digits] (an exponent of at most three digits) from c
+ * into *d, gathering the digits as a whole number in integer arithmetic. Returns the
+ * first byte after it, or NULL where c does not start so. The caller checks that the
+ * number ends there. */
+static inline const char *real_decimal_scan(const char *c, real_decimal *d)
 {
-	/* 10^k, exact in double (and so in long double) up to 10^22; float reads only up
-	 * to 10^10 (REAL_EXACT_POW10). */
-	static const real exact_pow10[23] = {
-		REAL_C(1e0),  REAL_C(1e1),  REAL_C(1e2),  REAL_C(1e3),  REAL_C(1e4),  REAL_C(1e5),
-		REAL_C(1e6),  REAL_C(1e7),  REAL_C(1e8),  REAL_C(1e9),  REAL_C(1e10), REAL_C(1e11),
-		REAL_C(1e12), REAL_C(1e13), REAL_C(1e14), REAL_C(1e15), REAL_C(1e16), REAL_C(1e17),
-		REAL_C(1e18), REAL_C(1e19), REAL_C(1e20), REAL_C(1e21), REAL_C(1e22)};
-	uint64_t whole = 0; /* below 10^19 < 2^64 when it is used (REAL_EXACT_DIGITS) */
-	real mantissa, power;
-	int negative = *c == '-', digits = 0, scale = 0, exponent = 0, size;
-	int exponent_negative = 0;
-	if (FLT_EVAL_METHOD != 0)
-		return 0;
+	uint64_t whole = 0;
+	int digits, scale = 0, exponent = 0, exponent_negative = 0;
+	const char *first;
+	d->negative = *c == '-';
 	c += *c == '-' || *c == '+';
-	for (; *c >= '0' && *c <= '9'; c++, digits++)
+	/* The digits counted from where they start and stop, not in the loop. */
+	for (first = c; *c >= '0' && *c <= '9'; c++)
 		whole = whole * 10u + (uint64_t)(*c - '0');
-	if (*c == '.')
-		for (c++; *c >= '0' && *c <= '9'; c++, digits++, scale++)
+	digits = (int)(c - first);
+	if (*c == '.') {
+		for (first = ++c; *c >= '0' && *c <= '9'; c++)
 			whole = whole * 10u + (uint64_t)(*c - '0');
-	if (digits == 0 || digits > REAL_EXACT_DIGITS)
-		return 0;
+		scale = (int)(c - first);
+		digits += scale;
+	}
+	if (digits == 0)
+		return NULL;
 	if (*c == 'e' || *c == 'E') {
 		int exponent_digits = 0;
 		c++;
@@ -79,21 +81,50 @@ static inline int real_from_short_decimal(const char *c, real *out)
 		for (; *c >= '0' && *c <= '9' && exponent_digits < 3; c++, exponent_digits++)
 			exponent = exponent * 10 + (*c - '0');
 		if (exponent_digits == 0)
-			return 0;
+			return NULL;
 	}
-	if (*c != '\0')
+	d->whole = whole;
+	d->digits = digits;
+	d->scale = scale - (exponent_negative ? -exponent : exponent);
+	return c;
+}
+
+/* The short decimals scenes are made of, d read exactly into *out, or 0 when it is not
+ * exact so (strtod then reads it): a whole number of at most REAL_EXACT_DIGITS digits and
+ * a power of ten up to REAL_EXACT_POW10 are both exact in the type, and the power comes
+ * from a table: the same exact operands as a product built digit by digit, in 0.76 of the
+ * instructions (SPD teapot-s12's 167 k numbers). */
+static inline int real_from_decimal(const real_decimal *d, real *out)
+{
+	/* 10^k, exact in double (and so in long double) up to 10^22; float reads only up
+	 * to 10^10 (REAL_EXACT_POW10). */
+	static const real exact_pow10[23] = {
+		REAL_C(1e0),  REAL_C(1e1),  REAL_C(1e2),  REAL_C(1e3),  REAL_C(1e4),  REAL_C(1e5),
+		REAL_C(1e6),  REAL_C(1e7),  REAL_C(1e8),  REAL_C(1e9),  REAL_C(1e10), REAL_C(1e11),
+		REAL_C(1e12), REAL_C(1e13), REAL_C(1e14), REAL_C(1e15), REAL_C(1e16), REAL_C(1e17),
+		REAL_C(1e18), REAL_C(1e19), REAL_C(1e20), REAL_C(1e21), REAL_C(1e22)};
+	real mantissa, power;
+	int size;
+	if (FLT_EVAL_METHOD != 0 || d->digits > REAL_EXACT_DIGITS ||
+	    d->scale > REAL_EXACT_POW10 || -d->scale > REAL_EXACT_POW10)
 		return 0;
-	scale -= exponent_negative ? -exponent : exponent; /* the value is mantissa / 10^scale */
-	if (scale > REAL_EXACT_POW10 || -scale > REAL_EXACT_POW10)
-		return 0;
-	size = scale < 0 ? -scale : scale;
+	size = d->scale < 0 ? -d->scale : d->scale;
 	/* Long double's powers past 10^22: products of exact powers, each exact. */
 	for (power = exact_pow10[size < 22 ? size : 22]; size > 22; size--)
 		power *= REAL_C(10.0);
-	mantissa = (real)whole;
-	mantissa = scale < 0 ? mantissa * power : mantissa / power;
-	*out = negative ? -mantissa : mantissa;
+	mantissa = (real)d->whole;
+	mantissa = d->scale < 0 ? mantissa * power : mantissa / power;
+	*out = d->negative ? -mantissa : mantissa;
 	return 1;
+}
+
+/* A whole token that is a short decimal (real_from_decimal), read exactly into *out; 0
+ * otherwise. */
+static inline int real_from_short_decimal(const char *c, real *out)
+{
+	real_decimal d;
+	c = real_decimal_scan(c, &d);
+	return c && *c == '\0' && real_from_decimal(&d, out);
 }
 /* Reading numbers: real_from_text converts a whole token, times 2^shift (the scene's
  * length scale, always 0 in floating point), and returns a REAL_TEXT_ status. */

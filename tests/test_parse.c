@@ -72,16 +72,65 @@ static long read_chunks(void *ctx, unsigned char *to, long max)
 	return n;
 }
 
-/* What a parse gave, for comparing the two readers. */
+/* What a parse gave, for comparing the two readers: its numbers by a hash of what the
+ * scene holds of them. */
 typedef struct {
+	unsigned long values;
 	int ok, message_count, object_count, light_count, lines[8];
 	char messages[sizeof messages];
 } parse_outcome;
+
+/* Mixes x into the hash h: its value as a double and the rest of it (long double's last
+ * bits), byte by byte. */
+static void mix_real(unsigned long *h, real x)
+{
+	double parts[2];
+	const unsigned char *b = (const unsigned char *)parts;
+	size_t i;
+	parts[0] = (double)x;
+	parts[1] = (double)(x - (real)parts[0]);
+	for (i = 0; i < sizeof parts; i++)
+		*h = (*h ^ b[i]) * 16777619ul;
+}
+
+static void mix_vec(unsigned long *h, vec3 v)
+{
+	mix_real(h, v.x);
+	mix_real(h, v.y);
+	mix_real(h, v.z);
+}
+
+/* A hash of the numbers a parse of sc read: the view, lights, materials, vertices and
+ * spheres. */
+static unsigned long scene_values(void)
+{
+	unsigned long h = 2166136261ul;
+	int i;
+	mix_vec(&h, sc.camera.from);
+	mix_vec(&h, sc.camera.at);
+	mix_vec(&h, sc.background);
+	for (i = 0; i < sc.light_count; i++)
+		mix_vec(&h, sc.lights[i].position);
+	for (i = 0; i < sc.material_count; i++) {
+		mix_vec(&h, sc.materials[i].color);
+		mix_real(&h, sc.materials[i].kd);
+		mix_real(&h, sc.materials[i].shine);
+	}
+	for (i = 0; i < sc.vertex_count; i++)
+		mix_vec(&h, sc.vertices[i]);
+	for (i = 0; i < sc.object_count; i++)
+		if (sc.objects[i].kind == SHAPE_SPHERE) {
+			mix_vec(&h, sc.objects[i].u.sphere.center);
+			mix_real(&h, sc.objects[i].u.sphere.radius);
+		}
+	return h;
+}
 
 static void outcome_of(int ok, parse_outcome *o)
 {
 	int i;
 	o->ok = ok;
+	o->values = ok ? scene_values() : 0;
 	o->message_count = message_count;
 	memset(o->messages, 0, sizeof o->messages);
 	memcpy(o->messages, messages, strlen(messages));
