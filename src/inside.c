@@ -67,8 +67,7 @@ static int list_overlaps(inside_list *l, const scene *s, const bvh_tree *t, int 
 /* Where listed object o lies, seen from the centre of its solid's box [lo, hi]: the
  * half-space of its bounding ball's far side from there (inside.h), less what rounding can
  * move either side of the comparison inside_nearest makes. A sphere's ball is its own,
- * grown by two of the pads the tree grows its box by: its hits are within a pad of it in
- * each coordinate, so within sqrt(3) pads in any direction. Any other object's is the ball
+ * grown by two of the pads the tree grows its box by; any other object's is the ball
  * round its padded box. */
 static inside_reach reach_of(const scene *s, int o, vec3 lo, vec3 hi)
 {
@@ -95,19 +94,30 @@ static inside_reach reach_of(const scene *s, int o, vec3 lo, vec3 hi)
 		radius = real_mul(real_sqrt(vec_dot(half, half)),
 				  REAL_C(1.0) + REAL_C(8.0) * REAL_EPSILON);
 	}
-	away = vec_sub(ball, vec_scale(vec_add(lo, hi), REAL_C(0.5)));
-	distance = real_sqrt(vec_dot(away, away));
-	if (!(distance > REAL_C(0.0)) || !real_isfinite(distance))
-		return reach;
-	/* toward is unit to a few roundings, so a point of the ball lies at least
-	 * toward . ball - radius (1 + 4 epsilon) along it. The dot products of the ball's
-	 * centre here and of the two ends of a ray's way (within the solid's box, whose
-	 * coordinates' magnitudes sum to at most |lo|1 + |hi|1) each round by a few epsilon
-	 * of the sum of their terms' magnitudes: 32 epsilon of all of them covers both. */
-	reach.toward = vec_scale(away, REAL_C(1.0) / distance);
+	/* The sizes of everything compared: the ball, and twice the solid's box, which holds
+	 * the ends of a ray's way (so their coordinates' magnitudes sum to at most
+	 * |lo|1 + |hi|1, as does the way's length). */
 	size = real_fabs(ball.x) + real_fabs(ball.y) + real_fabs(ball.z) + radius +
 	       REAL_C(2.0) * (real_fabs(lo.x) + real_fabs(lo.y) + real_fabs(lo.z) +
 			      real_fabs(hi.x) + real_fabs(hi.y) + real_fabs(hi.z));
+	away = vec_sub(ball, vec_scale(vec_add(lo, hi), REAL_C(0.5)));
+	distance = real_sqrt(vec_dot(away, away));
+	/* A ball centred within an epsilon of that size of the solid's centre has no side
+	 * worth knowing, and the square of so short an offset could be subnormal, which would
+	 * leave toward far from unit length: such an object is always tested. Past it the
+	 * square is a normal number (the box is at least 4 pads wide), and toward unit to a
+	 * few roundings. */
+	if (!(distance > REAL_EPSILON * size) || !real_isfinite(distance))
+		return reach;
+	/* A point of the ball lies at least toward . ball - radius (1 + 4 epsilon) along
+	 * toward. What the comparison must allow for is a few epsilon of `size` each: the
+	 * rounding of the three dot products; the distance from the exact ray of the solid's
+	 * computed exit point and of a listed object's computed hit (points on the ray, from
+	 * the origin and a distance both bounded by the solid's box: a sphere's test is
+	 * exact to a few epsilon of the offset from its centre, which a hit far along a ray
+	 * from far off puts many pads off the sphere); and the ball's centre as computed.
+	 * 32 epsilon of `size` covers them. */
+	reach.toward = vec_scale(away, REAL_C(1.0) / distance);
 	reach.beyond = vec_dot(reach.toward, ball) -
 		       real_mul(radius, REAL_C(1.0) + REAL_C(4.0) * REAL_EPSILON) -
 		       real_mul(REAL_C(32.0) * REAL_EPSILON, size);

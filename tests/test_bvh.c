@@ -744,6 +744,31 @@ static void test_inside_lists(void)
 			CHECK(mismatches > 20);
 		}
 	}
+	/* A sphere listed in a glass sphere whose centre lies off the glass's by a length
+	 * whose square is subnormal (the least positive number's root, 1.125 times): no
+	 * half-space for it (toward would be far from unit length), and the same hits as
+	 * object by object. */
+	{
+		static char text[256];
+		static const double origin[3] = {0, 0, 0};
+		real least = REAL_C(1.0);
+		while (least / REAL_C(2.0) > REAL_C(0.0))
+			least /= REAL_C(2.0);
+		snprintf(text, sizeof text, "f 1 1 1 0 0 0 0.9 1\ns 0 0 0 1\nf 1 0 0 1 0 0 0 1\n"
+			 "s %.20Le 0 0 0.5\n", (long double)(real_sqrt(least) * REAL_C(1.125)));
+		if (CHECK(scene_of("inside-near-centre.nff", text, &tree, &plain)) &&
+		    CHECK(tree->inside.list_count >= 1)) {
+			static const double cap[3] = {-0.47, 0, 0};
+			mismatches = 0;
+			CHECK(compare_inside(tree, plain, &tree->inside, 0, origin, 1.0, 20000,
+					     &mismatches) > 15000);
+			/* Through the inner sphere's far cap, where a toward 1.125 long would
+			 * have put the half-space's plane inside the sphere. */
+			compare_aimed(tree, plain, &tree->inside, 0, origin, 1.0, cap, 20000,
+				      &mismatches);
+			CHECK_INT(mismatches, 0);
+		}
+	}
 	if (CHECK(scene_of("inside-box.nff", "f 1 1 1 0 0 0 0.9 1.5\ns 0 0 0 1\nbox 2 2 2 3 3 3\n",
 			   &tree, &plain)))
 		CHECK_INT(tree->inside.list_count, 0);
