@@ -121,6 +121,12 @@ void bvh_build(bvh_tree *t, const scene *s);
 int bvh_object_pieces(const scene *s, int index);
 int bvh_piece_bounds(const scene *s, int index, int piece, int pieces, vec3 *lo, vec3 *hi);
 
+/* A corner back as reals (exact: a float is a real in every floating type). */
+static inline vec3 bvh_point_vec(bvh_point p)
+{
+	return vec_make((real)p.x, (real)p.y, (real)p.z);
+}
+
 /* A box corner as the nodes keep it: rounded outwards (up for the upper corner) where
  * that is to float, else as it is. */
 static inline bvh_point bvh_round_corner(vec3 v, int up)

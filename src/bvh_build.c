@@ -25,12 +25,6 @@
 RT_STATIC_ASSERT(node_count_fits, 2 * (long)RT_MAX_OBJECTS < 2147483647L);
 
 
-/* A corner back as reals (exact: a float is a real in every floating type). */
-static inline vec3 point_vec(bvh_point p)
-{
-	return vec_make((real)p.x, (real)p.y, (real)p.z);
-}
-
 /* Makes [lo, hi] the empty box, inside out. */
 static void points_empty(bvh_point *lo, bvh_point *hi)
 {
@@ -181,7 +175,7 @@ static int leaf_is_better(int best_axis, real best_cost, int count)
 static int sorted_split(int first, int count, const item_bounds *node, int *axis_out,
 			item_bounds child[2])
 {
-	real2 node_area = box_half_area(point_vec(node->lo), point_vec(node->hi));
+	real2 node_area = box_half_area(bvh_point_vec(node->lo), bvh_point_vec(node->hi));
 	int order[3][SORTED_MAX];
 	real best_cost = REAL_MAX;
 	int best_axis = -1, best_left = 0, axis, i, j;
@@ -204,7 +198,7 @@ static int sorted_split(int first, int count, const item_bounds *node, int *axis
 		for (i = count - 1; i > 0; i--) {
 			const build_item *o = &items[first + order[axis][i]];
 			points_grow(&run_lo, &run_hi, &o->lo, &o->hi);
-			right_area[i] = box_half_area(point_vec(run_lo), point_vec(run_hi));
+			right_area[i] = box_half_area(bvh_point_vec(run_lo), bvh_point_vec(run_hi));
 		}
 		points_empty(&run_lo, &run_hi);
 		for (i = 0; i < count - 1; i++) {
@@ -215,7 +209,7 @@ static int sorted_split(int first, int count, const item_bounds *node, int *axis
 			/* Equal centres stay together, as in a bin. */
 			if (!(key[i] < key[i + 1]))
 				continue;
-			left_area = box_half_area(point_vec(run_lo), point_vec(run_hi));
+			left_area = box_half_area(bvh_point_vec(run_lo), bvh_point_vec(run_hi));
 			cost = split_cost(left_area, i + 1, right_area[i + 1], count - i - 1,
 					  node_area);
 			if (cost < best_cost) {
@@ -245,7 +239,7 @@ static int sorted_split(int first, int count, const item_bounds *node, int *axis
 static int sah_split(int first, int count, const item_bounds *node, int *axis_out,
 		     item_bounds child[2])
 {
-	real2 node_area = box_half_area(point_vec(node->lo), point_vec(node->hi));
+	real2 node_area = box_half_area(bvh_point_vec(node->lo), bvh_point_vec(node->hi));
 	real best_cost;
 	axis_bins bins[3];
 	int bin_count[3][FINE_BINS];
@@ -291,7 +285,7 @@ static int sah_split(int first, int count, const item_bounds *node, int *axis_ou
 				points_grow(&run_lo, &run_hi, &bin_lo[axis][i], &bin_hi[axis][i]);
 			/* Only the planes after a bin with objects are priced (below). */
 			right_area[i] = bin_count[axis][i - 1]
-					      ? box_half_area(point_vec(run_lo), point_vec(run_hi))
+					      ? box_half_area(bvh_point_vec(run_lo), bvh_point_vec(run_hi))
 					      : 0;
 			right_count[i] = n;
 		}
@@ -307,7 +301,7 @@ static int sah_split(int first, int count, const item_bounds *node, int *axis_ou
 			 * node, where the pricing is most of the work. */
 			if (n == 0 || right_count[i + 1] == 0 || !bin_count[axis][i])
 				continue;
-			cost = split_cost(box_half_area(point_vec(run_lo), point_vec(run_hi)), n,
+			cost = split_cost(box_half_area(bvh_point_vec(run_lo), bvh_point_vec(run_hi)), n,
 					  right_area[i + 1], right_count[i + 1], node_area);
 			if (cost < best_cost) {
 				best_cost = cost;

@@ -26,8 +26,7 @@ static int list_overlaps(inside_list *l, const scene *s, const bvh_tree *t, int 
 	int stack[BVH_MAX_DEPTH + 2], top = 1;
 	bvh_point reach_lo, reach_hi;
 	{
-		vec3 lo = vec_make((real)l->lo.x, (real)l->lo.y, (real)l->lo.z);
-		vec3 hi = vec_make((real)l->hi.x, (real)l->hi.y, (real)l->hi.z);
+		vec3 lo = bvh_point_vec(l->lo), hi = bvh_point_vec(l->hi);
 		real pad = box_rounding_pad(lo, hi);
 		vec3 grow = vec_make(pad, pad, pad);
 		reach_lo = bvh_round_corner(vec_sub(lo, grow), 0);
@@ -87,8 +86,8 @@ static inside_reach reach_of(const scene *s, int o, vec3 lo, vec3 hi)
 		vec3 half;
 		if (bvh_object_pieces(s, o) != 1 || !bvh_object_box(s, o, &plo, &phi))
 			return reach;
-		olo = vec_make((real)plo.x, (real)plo.y, (real)plo.z);
-		ohi = vec_make((real)phi.x, (real)phi.y, (real)phi.z);
+		olo = bvh_point_vec(plo);
+		ohi = bvh_point_vec(phi);
 		ball = vec_scale(vec_add(olo, ohi), REAL_C(0.5));
 		half = vec_scale(vec_sub(ohi, olo), REAL_C(0.5));
 		radius = real_mul(real_sqrt(vec_dot(half, half)),
@@ -144,8 +143,7 @@ void inside_build(inside_lists *l, const scene *s, const bvh_tree *t)
 			continue;
 		list->solid = i;
 		if (list_overlaps(list, s, t, i)) {
-			vec3 lo = vec_make((real)list->lo.x, (real)list->lo.y, (real)list->lo.z);
-			vec3 hi = vec_make((real)list->hi.x, (real)list->hi.y, (real)list->hi.z);
+			vec3 lo = bvh_point_vec(list->lo), hi = bvh_point_vec(list->hi);
 			int k;
 			for (k = 0; k < list->count; k++)
 				list->reach[k] = reach_of(s, list->objects[k], lo, hi);
@@ -193,7 +191,7 @@ int inside_nearest(const inside_lists *l, const scene *s, const bvh_tree *t, int
 		   const ray *r, int skip, real tmax, hit *h, int *found)
 {
 	const inside_list *list;
-	vec3 exit;
+	vec3 way_end;
 	int i, k = l->list_of[solid];
 	if (k < 1 || k > l->list_count || solid == skip)
 		return 0;
@@ -207,7 +205,7 @@ int inside_nearest(const inside_lists *l, const scene *s, const bvh_tree *t, int
 		return 0;
 	h->object = solid;
 	tmax = h->t;
-	exit = h->point;
+	way_end = h->point;
 	for (i = 0; i < t->unbounded_count; i++)
 		visit_nearest(s, t->index[i], r, skip, &tmax, h);
 	for (i = 0; i < list->count; i++) {
@@ -215,7 +213,7 @@ int inside_nearest(const inside_lists *l, const scene *s, const bvh_tree *t, int
 		 * listed object's half-space only if one of its ends lies in it. */
 		const inside_reach *reach = &list->reach[i];
 		if (vec_dot(reach->toward, r->origin) < reach->beyond &&
-		    vec_dot(reach->toward, exit) < reach->beyond)
+		    vec_dot(reach->toward, way_end) < reach->beyond)
 			continue;
 		visit_nearest(s, list->objects[i], r, skip, &tmax, h);
 	}

@@ -217,7 +217,9 @@ static int next_buffered_number(lexer *lx, real *out)
 {
 	const char *token, *end;
 	real_decimal d;
-	if (!take_buffered_spaces(lx))
+	/* Where lexer_next would take a token from the block (nothing given back, no
+	 * byte-order mark to look for). */
+	if (lx->pushed || lx->at_start || !lx->read_block || !take_buffered_spaces(lx))
 		return 0;
 	token = (const char *)lx->buffer + lx->taken;
 	end = real_decimal_scan(token, &d);
@@ -325,15 +327,15 @@ int lexer_read_value(lexer *lx, const char *what, int length, real *out)
 	int shift = length ? lx->length_shift : 0, status, out_of_range;
 	*out = REAL_C(0.0); /* defined even on failure (static analysis cannot see through fail) */
 #if RT_READ_BUFFER && !REAL_FIXED
-	if (!lx->pushed && !lx->at_start && lx->read_block && next_buffered_number(lx, out)) {
-		if (length)
-			lx->longest = real_max(lx->longest, real_fabs(*out));
-		return 1;
-	}
+	if (next_buffered_number(lx, out))
+		status = REAL_TEXT_OK;
+	else
 #endif
-	if (!lexer_next_value(lx, what, 0))
-		return 0;
-	status = real_from_text(lx->tok, shift, out);
+	{
+		if (!lexer_next_value(lx, what, 0))
+			return 0;
+		status = real_from_text(lx->tok, shift, out);
+	}
 	/* Underflow to zero is no error, but a zero it makes is named for what it is
 	 * (zero_word). */
 	if (status == REAL_TEXT_TINY) {
