@@ -10,21 +10,27 @@
 cd "$(dirname "$0")/.." || exit 1
 . tests/lib.sh
 
-# Adds a suite's `N passed, N failed` line (the last line of its output) to the totals.
+# Adds a suite's `N passed, N failed` line (the last line of its output) to the totals,
+# with the seconds it took: the time since the suite before it ended (each suite runs in
+# the command substitution of its own call, just before the call).
+suite_end=$(date +%s)
 tally() {
 	name=$1
 	out=$2
+	now=$(date +%s)
+	took="($((now - suite_end)) s)"
+	suite_end=$now
 	line=$(printf '%s\n' "$out" | tail -n 1)
 	p=$(printf '%s\n' "$line" | sed -n 's/^\([0-9][0-9]*\) passed, \([0-9][0-9]*\) failed$/\1/p')
 	f=$(printf '%s\n' "$line" | sed -n 's/^\([0-9][0-9]*\) passed, \([0-9][0-9]*\) failed$/\2/p')
 	if [ -z "$p" ]; then
 		printf '%s\n' "$out"
-		echo "$name: did not finish (no summary line)"
+		echo "$name: did not finish (no summary line) $took"
 		failed=$((failed + 1))
 		return
 	fi
 	printf '%s\n' "$out" | grep -v '^[0-9]* passed, [0-9]* failed$' | sed "s|^|$name: |"
-	echo "$name: $line"
+	echo "$name: $line $took"
 	passed=$((passed + p))
 	failed=$((failed + f))
 }
