@@ -86,11 +86,18 @@ include mk/variants.mk mk/mcu.mk mk/dev.mk
 
 # Everything tests/run.sh runs; MemorySanitizer's builds where clang is present
 # (MSAN_TEST, mk/variants.mk), the MCU's where the cross compiler is (MCU_TEST, mk/mcu.mk).
-test: rt build/unit-tests build/san/rt build/san/unit-tests build/san/replay build/san/replay-fixed \
-      build/unit-tests-float build/unit-tests-ref build/unit-tests-scalar build/unit-tests-sse \
-      build/unit-tests-fixed build/san/unit-tests-fixed build/rt-fixed build/rt-ref \
-      build/rt-float build/rt-small build/rt-limits build/rt-no-tree $(MSAN_TEST) $(MCU_TEST)
+TEST_PROGRAMS = rt build/unit-tests build/san/rt build/san/unit-tests build/san/replay \
+	build/san/replay-fixed build/unit-tests-float build/unit-tests-ref \
+	build/unit-tests-scalar build/unit-tests-sse build/unit-tests-fixed \
+	build/san/unit-tests-fixed build/rt-fixed build/rt-ref build/rt-float build/rt-small \
+	build/rt-limits build/rt-no-tree $(MSAN_TEST) $(MCU_TEST)
+# They are built a job a processor unless the caller chose (-j): twenty-odd whole
+# programs, most of a fresh checkout's test time when built one after another.
+TEST_JOBS := $(shell getconf _NPROCESSORS_ONLN 2>/dev/null || echo 1)
+test:
+	@$(MAKE) --no-print-directory $(if $(filter -j%,$(MAKEFLAGS)),,-j$(TEST_JOBS)) test-programs
 	@sh tests/run.sh
+test-programs: $(TEST_PROGRAMS)
 
 install: rt
 	mkdir -p $(DESTDIR)$(BINDIR) $(DESTDIR)$(MANDIR)
@@ -105,6 +112,6 @@ uninstall:
 clean:
 	rm -rf build rt
 
-.PHONY: all test install uninstall clean
+.PHONY: all test test-programs install uninstall clean
 
 -include $(OBJ:.o=.d) $(TEST_OBJ:.o=.d) $(TEST_LIB_OBJ:.o=.d)
