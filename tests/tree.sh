@@ -24,10 +24,16 @@ fi
 [ -d "$SPD_DIR/nff" ] || echo "SPD scenes not found in $SPD_DIR/nff (SPD_DIR): left out"
 
 # same FILE: both builds' image and --ids image of FILE are the same bytes, with the same
-# exit status (a scene either refuses gives the same error status in both).
+# exit status (a scene either refuses gives the same error status in both). The tree's
+# image run reports its statistics into $tmp/stats (the objects counted below).
 same() {
+	: >"$tmp/stats"
 	for ids in "" --ids; do
-		within "$run_limit" "$RT" -q -j 1 -s 48x36 $ids "$1" >"$tmp/tree" 2>/dev/null
+		if [ -z "$ids" ]; then
+			within "$run_limit" "$RT" -q -j 1 -s 48x36 --stats "$1" >"$tmp/tree" 2>"$tmp/stats"
+		else
+			within "$run_limit" "$RT" -q -j 1 -s 48x36 $ids "$1" >"$tmp/tree" 2>/dev/null
+		fi
 		tree_status=$?
 		within "$run_limit" "$NO_TREE" -q -j 1 -s 48x36 $ids "$1" >"$tmp/all" 2>/dev/null
 		all_status=$?
@@ -53,7 +59,7 @@ for f in scenes/*.nff scenes/hard/*.nff tests/good/*.nff "$SPD_DIR"/nff/*-s1.nff
 		;;
 	esac
 	same "$f"
-	objects=$("$RT" -q -j 1 -s 1x1 --stats "$f" 2>&1 >/dev/null | sed -n 's/^objects: //p')
+	objects=$(sed -n 's/^objects: //p' "$tmp/stats")
 	[ "${objects:-0}" -ge 12 ] && with_tree=$((with_tree + 1))
 done
 if [ "$with_tree" -ge 100 ]; then ok; else
