@@ -92,6 +92,10 @@ fi
 # fails, at once) and leaves its output and its seconds in $tmp. The longest suites are
 # offered first, so that no worker is left with one of them at the end.
 make_tmp
+# Interrupted, the whole run stops: the workers and the suites they started are in this
+# run's process group, and a background job of a script ignores SIGINT, so they are told
+# with TERM (this script itself no longer listening for it).
+trap 'trap "" TERM; kill -TERM 0 2>/dev/null; exit 1' HUP INT TERM
 worker() {
 	for name in tree watertight mcu bad-sanitized cli-sanitized bad cli $suites; do
 		case " $suites " in *" $name "*) ;; *) continue ;; esac
