@@ -92,10 +92,14 @@ TEST_PROGRAMS = rt build/unit-tests build/san/rt build/san/unit-tests build/san/
 	build/san/unit-tests-fixed build/rt-fixed build/rt-ref build/rt-float build/rt-small \
 	build/rt-limits build/rt-no-tree $(MSAN_TEST) $(MCU_TEST)
 # They are built a job a processor unless the caller chose (-j): twenty-odd whole
-# programs, most of a fresh checkout's test time when built one after another.
+# programs, most of a fresh checkout's test time when built one after another. Given -j,
+# they are test's own prerequisites, in the caller's make (which sees -j in MAKEFLAGS
+# only once the makefiles are read, hence the second expansion): a make of its own
+# could build them at the same time as another goal of the caller's (make -j2 rt test).
 TEST_JOBS := $(shell getconf _NPROCESSORS_ONLN 2>/dev/null || echo 1)
-test:
-	@$(MAKE) --no-print-directory $(if $(filter -j%,$(MAKEFLAGS)),,-j$(TEST_JOBS)) test-programs
+.SECONDEXPANSION:
+test: $$(if $$(filter -j%,$$(MAKEFLAGS)),$$(TEST_PROGRAMS))
+	@$(if $(filter -j%,$(MAKEFLAGS)),:,$(MAKE) --no-print-directory -j$(TEST_JOBS) test-programs)
 	@sh tests/run.sh
 test-programs: $(TEST_PROGRAMS)
 

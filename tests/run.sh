@@ -15,8 +15,8 @@ cd "$(dirname "$0")/.." || exit 1
 # LeakSanitizer's scan at exit reads every page of rt's static arrays (2.2 GiB of bss in
 # the default build): 12 s a run on a machine where a page first touched costs ~10 us.
 # rt allocates nothing, so it has no leak to find; AddressSanitizer and UBSan stay on for
-# the programs' suites. The unit tests and the corpus replay, built with the tests' small
-# capacities, keep the scan.
+# the suites that run programs. The unit tests and the corpus replay, built with the
+# tests' small capacities, keep the scan.
 no_leaks="detect_leaks=0${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
 # The capacity limits' scenes (tests/bad/97-99) run on a build of small capacities.
 LIMITS_RT=$(pwd)/build/rt-limits
@@ -31,8 +31,16 @@ replay() {
 	"$@"
 }
 
-# run_suite NAME: runs the suite NAME; its last line is `N passed, N failed`.
+# run_suite NAME: runs the suite NAME (in a subshell of its own: what it exports stays
+# there); its last line is `N passed, N failed`.
 run_suite() {
+	case $1 in
+	unit* | fuzz-replay | fuzz-replay-fixed) ;;
+	*)
+		ASAN_OPTIONS=$no_leaks
+		export ASAN_OPTIONS
+		;;
+	esac
 	case $1 in
 	unit) ./build/unit-tests ;;
 	unit-sanitized) ./build/san/unit-tests ;;
@@ -47,8 +55,8 @@ run_suite() {
 	unit-fixed-sanitized) ./build/san/unit-tests-fixed ;;
 	fuzz-replay) replay ./build/san/replay ;;
 	fuzz-replay-fixed) replay ./build/san/replay-fixed ;;
-	cli | golden | bad | parallel | antialias) RT=./rt ASAN_OPTIONS=$no_leaks sh "tests/$1.sh" ;;
-	*-sanitized) RT=./build/san/rt ASAN_OPTIONS=$no_leaks sh "tests/${1%-sanitized}.sh" ;;
+	cli | golden | bad | parallel | antialias) RT=./rt sh "tests/$1.sh" ;;
+	*-sanitized) RT=./build/san/rt sh "tests/${1%-sanitized}.sh" ;;
 	fixed) sh tests/fixed.sh ;;
 	docs) RT=./rt sh tests/docs.sh ;;
 	unit-msan) ./build/msan/unit-tests ;;
@@ -92,16 +100,20 @@ fi
 # fails, at once) and leaves its output and its seconds in $tmp. The longest suites are
 # offered first, so that no worker is left with one of them at the end.
 make_tmp
-# Interrupted, the whole run stops: the workers and the suites they started are in this
-# run's process group, and a background job of a script ignores SIGINT, so they are told
-# with TERM (this script itself no longer listening for it).
-trap 'trap "" TERM; kill -TERM 0 2>/dev/null; exit 1' HUP INT TERM
+# Interrupted (Ctrl-C, which the whole process group gets), the whole run stops: the
+# workers and the suites they started ignore SIGINT, as background jobs of a script do,
+# so the group is told with TERM (this script itself no longer listening for it). Sent
+# HUP or TERM alone, the run ends its workers and leaves the rest of the group alone
+# (make, or a script that called it).
+worker_pids=
+trap 'trap "" TERM; kill -TERM 0 2>/dev/null; exit 1' INT
+trap 'kill -TERM $worker_pids 2>/dev/null; exit 1' HUP TERM
 worker() {
 	for name in tree watertight mcu bad-sanitized cli-sanitized bad cli $suites; do
 		case " $suites " in *" $name "*) ;; *) continue ;; esac
 		mkdir "$tmp/$name.claim" 2>/dev/null || continue
 		start=$(date +%s)
-		run_suite "$name" >"$tmp/$name.out" 2>&1
+		(run_suite "$name") >"$tmp/$name.out" 2>&1
 		echo $(($(date +%s) - start)) >"$tmp/$name.seconds"
 	done
 }
@@ -112,6 +124,7 @@ case $workers in '' | *[!0-9]* | 0) workers=1 ;; esac
 i=1
 while [ "$i" -lt "$workers" ]; do
 	worker &
+	worker_pids="$worker_pids $!"
 	i=$((i + 1))
 done
 worker
