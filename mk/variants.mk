@@ -70,7 +70,7 @@ build/unit-tests-fixed: $(FIXED_TEST_OBJ) $(FIXED_LIB_OBJ)
 algorithms: $(ALGORITHMS:%=build/rt-%)
 
 build/rt-%: $(SRC) $(HDR)
-	$(call whole-program,$(CC),$(VARIANT_CFLAGS) $(CPPFLAGS) $(CFLAGS),$(SRC),$(LINK_LIBS))
+	$(call whole-program,$(CC),$(VARIANT_CFLAGS) $(LTO) $(CPPFLAGS) $(CFLAGS),$(SRC),$(LINK_LIBS))
 
 # The sanitizer build of everything, for the test run.
 SAN_FLAGS = -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g
