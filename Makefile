@@ -34,9 +34,12 @@ RT_CFLAGS = $(WARN) $(HOST_MODEL) -ffp-contract=off -MMD -MP
 # optimisation) where the compiler and linker can: the search calls each shape's test,
 # the plane's distance and the vector helpers in other files, and inlined they cost 3-5 %
 # less CPU time on SPD mount, teapot-s12, tetra and tree (docs/speed.md); the images are
-# the same bytes. `make LTO=` builds without it; a compiler that cannot gets none.
-LTO ?= $(shell printf 'int main(void) { return 0; }\n' | \
+# the same bytes. `make LTO=` builds without it; a compiler that cannot gets none. Asked
+# once a make (a simple variable: a recursive one would compile the test at every use).
+ifeq ($(origin LTO),undefined)
+LTO := $(shell printf 'int main(void) { return 0; }\n' | \
 	 $(CC) -flto=auto -x c -o /dev/null - > /dev/null 2>&1 && echo -flto=auto)
+endif
 LDLIBS ?=
 RT_LDLIBS = -lm
 
