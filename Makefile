@@ -32,10 +32,11 @@ CLANG_MODEL := $(if $(HOST_X86_64),-mcmodel=large)
 RT_CFLAGS = $(WARN) $(HOST_MODEL) -ffp-contract=off -MMD -MP
 # rt and the builds of each number type are optimised across files (link-time
 # optimisation) where the compiler and linker can: the search calls each shape's test,
-# the plane's distance and the vector helpers in other files, and inlined they cost 3-5 %
-# less CPU time on SPD mount, teapot-s12, tetra and tree (docs/speed.md); the images are
-# the same bytes. `make LTO=` builds without it; a compiler that cannot gets none. Asked
-# once a make (a simple variable: a recursive one would compile the test at every use).
+# the plane's distance and the vector helpers in other files, and inlined they cost 2-5 %
+# less CPU time on the SPD scenes (docs/speed.md); the images are the same bytes.
+# `make LTO=` builds without it (build/flags, below, rebuilds what it changes); a
+# compiler that cannot gets none. Asked once a make (a simple variable: a recursive one
+# would compile the test at every use).
 ifeq ($(origin LTO),undefined)
 LTO := $(shell printf 'int main(void) { return 0; }\n' | \
 	 $(CC) -flto=auto -x c -o /dev/null - > /dev/null 2>&1 && echo -flto=auto)
@@ -74,20 +75,29 @@ endef
 
 all: rt
 
+# What the objects and the builds of each type are made with, kept in build/flags: the
+# file is written again when it changes (another CC, LTO, CFLAGS...), and what depends
+# on it is then built again. Without it a change of LTO rebuilt nothing, and objects of
+# one compiler's link-time optimisation went to another's linker.
+BUILD_FLAGS = $(CC) $(LTO) $(CPPFLAGS) $(CFLAGS) $(LDFLAGS)
+ifneq ($(BUILD_FLAGS),$(shell cat build/flags 2> /dev/null))
+$(shell mkdir -p build && printf '%s\n' '$(BUILD_FLAGS)' > build/flags)
+endif
+
 # Linked with the compiler's flags: with link-time optimisation the code is made there.
 rt: $(OBJ)
 	$(CC) $(if $(LTO),$(LTO) $(HOST_MODEL) -ffp-contract=off $(CFLAGS)) $(LDFLAGS) -o $@ \
 		$(OBJ) $(LDLIBS) $(RT_LDLIBS)
 
-build/obj/%.o: src/%.c
+build/obj/%.o: src/%.c build/flags
 	@mkdir -p $(@D)
 	$(CC) $(RT_CFLAGS) $(LTO) $(CPPFLAGS) $(CFLAGS) -c -o $@ $<
 
-build/obj/tests/%.o: tests/%.c
+build/obj/tests/%.o: tests/%.c build/flags
 	@mkdir -p $(@D)
 	$(CC) $(RT_CFLAGS) $(TEST_CAPACITIES) -Isrc $(CPPFLAGS) $(CFLAGS) -c -o $@ $<
 
-build/obj/test-lib/%.o: src/%.c
+build/obj/test-lib/%.o: src/%.c build/flags
 	@mkdir -p $(@D)
 	$(CC) $(RT_CFLAGS) $(TEST_CAPACITIES) $(CPPFLAGS) $(CFLAGS) -c -o $@ $<
 

@@ -69,7 +69,7 @@ build/unit-tests-fixed: $(FIXED_TEST_OBJ) $(FIXED_LIB_OBJ)
 	$(CC) $(LDFLAGS) -o $@ $(FIXED_TEST_OBJ) $(FIXED_LIB_OBJ) $(LDLIBS) $(RT_LDLIBS)
 algorithms: $(ALGORITHMS:%=build/rt-%)
 
-build/rt-%: $(SRC) $(HDR)
+build/rt-%: $(SRC) $(HDR) build/flags
 	$(call whole-program,$(CC),$(VARIANT_CFLAGS) $(LTO) $(CPPFLAGS) $(CFLAGS),$(SRC),$(LINK_LIBS))
 
 # The sanitizer build of everything, for the test run.
