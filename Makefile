@@ -83,6 +83,10 @@ BUILD_FLAGS = $(CC) $(LTO) $(CPPFLAGS) $(CFLAGS) $(LDFLAGS)
 ifneq ($(BUILD_FLAGS),$(shell cat build/flags 2> /dev/null))
 $(shell mkdir -p build && printf '%s\n' '$(BUILD_FLAGS)' > build/flags)
 endif
+# Made again after a clean in the same make (make clean rt).
+build/flags:
+	@mkdir -p $(@D)
+	@printf '%s\n' '$(BUILD_FLAGS)' > $@
 
 # Linked with the compiler's flags: with link-time optimisation the code is made there.
 rt: $(OBJ)
