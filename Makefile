@@ -80,13 +80,13 @@ all: rt
 # on it is then built again. Without it a change of LTO rebuilt nothing, and objects of
 # one compiler's link-time optimisation went to another's linker.
 BUILD_FLAGS = $(CC) $(LTO) $(CPPFLAGS) $(CFLAGS) $(LDFLAGS)
+WRITE_BUILD_FLAGS = mkdir -p build && printf '%s\n' '$(BUILD_FLAGS)' > build/flags
 ifneq ($(BUILD_FLAGS),$(shell cat build/flags 2> /dev/null))
-$(shell mkdir -p build && printf '%s\n' '$(BUILD_FLAGS)' > build/flags)
+$(shell $(WRITE_BUILD_FLAGS))
 endif
 # Made again after a clean in the same make (make clean rt).
 build/flags:
-	@mkdir -p $(@D)
-	@printf '%s\n' '$(BUILD_FLAGS)' > $@
+	@$(WRITE_BUILD_FLAGS)
 
 # Linked with the compiler's flags: with link-time optimisation the code is made there.
 rt: $(OBJ)

@@ -25,15 +25,12 @@ fi
 
 # same FILE: both builds' image and --ids image of FILE are the same bytes, with the same
 # exit status (a scene either refuses gives the same error status in both). The tree's
-# image run reports its statistics into $tmp/stats (the objects counted below).
+# image run (ids empty: --stats in its place) reports its statistics into $tmp/stats
+# (the objects counted below).
 same() {
-	: >"$tmp/stats"
 	for ids in "" --ids; do
-		if [ -z "$ids" ]; then
-			within "$run_limit" "$RT" -q -j 1 -s 48x36 --stats "$1" >"$tmp/tree" 2>"$tmp/stats"
-		else
-			within "$run_limit" "$RT" -q -j 1 -s 48x36 $ids "$1" >"$tmp/tree" 2>/dev/null
-		fi
+		within "$run_limit" "$RT" -q -j 1 -s 48x36 ${ids:---stats} "$1" >"$tmp/tree" \
+			2>"$tmp/stats$ids"
 		tree_status=$?
 		within "$run_limit" "$NO_TREE" -q -j 1 -s 48x36 $ids "$1" >"$tmp/all" 2>/dev/null
 		all_status=$?
