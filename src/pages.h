@@ -15,6 +15,12 @@
 /* Makes the pages that hold [start, start + bytes) present and writable, at once. */
 void pages_prepare(void *start, size_t bytes);
 
+/* Says that [start, start + bytes) is about to be written: a range that fills enough of
+ * the huge pages it touches (pages.c) is then given them, whole, where its pages first
+ * fault. Writes nothing and makes nothing present: a huge page of the range that is
+ * never written costs nothing. */
+void pages_plan(void *start, size_t bytes);
+
 /* For an array of `capacity` elements of `size` bytes filled from its start, about to
  * be written at [first, first + count): prepares the chunks of PAGES_CHUNK bytes the
  * range enters, each once (the chunk that holds element first - 1 was prepared when
@@ -22,6 +28,7 @@ void pages_prepare(void *start, size_t bytes);
 void pages_ahead(void *array, size_t size, size_t first, size_t count, size_t capacity);
 #else
 #define pages_prepare(start, bytes) ((void)(start), (void)(bytes))
+#define pages_plan(start, bytes) ((void)(start), (void)(bytes))
 #define pages_ahead(array, size, first, count, capacity)                                   \
 	((void)(array), (void)(size), (void)(first), (void)(count), (void)(capacity))
 #endif

@@ -49,6 +49,9 @@ int parse_polygon(parser *p, int patch)
 		return parser_capacity_error(p, line, "polygon vertices in the scene", "RT_MAX_VERTICES",
 				      RT_MAX_VERTICES);
 	pages_ahead(s->vertices, sizeof s->vertices[0], (size_t)first, (size_t)count, RT_MAX_VERTICES);
+	if (RT_SHAPE_PATCH && patch)
+		pages_ahead(s->normals, sizeof s->normals[0], (size_t)first, (size_t)count,
+			    RT_PATCH_VERTICES);
 	for (i = 0; i < count; i++) {
 		if (!lexer_read_triple(&p->lx, patch ? "patch vertex" : "polygon vertex", 1,
 			      &s->vertices[first + i]))

@@ -4,6 +4,7 @@
 #define _POSIX_C_SOURCE 200809L
 
 #include <errno.h>
+#include <limits.h>
 #include <stdio.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -30,6 +31,7 @@ typedef struct {
 	FILE *copy; /* what the passes so far read of an input that is not reopened */
 	long copied; /* bytes in copy */
 	long at;     /* the bytes of copy this pass has read */
+	scene *planned; /* the scene whose memory the file's length plans, until it is */
 	int reopen;  /* a regular file, or one read only once: no copy */
 	int writing; /* copy's last operation was a write (a seek must come between) */
 	int from_stdin;
@@ -68,6 +70,9 @@ static int file_open(void *ctx, int again)
 		close_input(f);
 		return 0;
 	}
+	if (f->planned && known && S_ISREG(st.st_mode) && st.st_size > 0)
+		scene_plan_pages(f->planned, st.st_size > LONG_MAX ? LONG_MAX : (long)st.st_size);
+	f->planned = NULL;
 	f->reopen = (!f->from_stdin && (!known || S_ISREG(st.st_mode))) || !again;
 	if (!f->reopen) {
 		f->copy = tmpfile();
@@ -164,6 +169,7 @@ int load_scene_file(scene *s, const char *path)
 	int ok;
 	memset(&f, 0, sizeof f);
 	f.path = path;
+	f.planned = s;
 	f.from_stdin = strcmp(path, "-") == 0;
 	f.name = f.from_stdin ? "<stdin>" : path;
 	source.open = file_open;

@@ -6,6 +6,7 @@
 #define _DEFAULT_SOURCE 1 /* mincore */
 
 #include "pages.h"
+#include "scene.h"
 #include "test.h"
 
 #if defined(__linux__) && !defined(RT_NO_PAGES_AHEAD)
@@ -130,6 +131,56 @@ static void check_big_array(size_t page)
 	check_big_advice(boundary);
 }
 
+/* pages_plan's advice: the huge pages a range touches, whole, when it fills an eighth
+ * of them, else none; and the scene's from its file's length (scene_plan_pages). Advice
+ * only: what the system then gives (a huge page, or small pages where it has none to
+ * spare) is its own. Written by nothing: 10 MiB from a huge page's boundary. */
+static unsigned char untouched_plan[(10 << 20) + (2 << 20)];
+static scene plan_scene;
+
+static void check_plan(void)
+{
+	unsigned char *plan = untouched_plan;
+	unsigned char *middle = (unsigned char *)&plan_scene.objects[RT_MAX_OBJECTS / 2];
+	uintptr_t from = 0, to = 0;
+	int i;
+	plan += (HUGE - (size_t)((uintptr_t)plan % HUGE)) % HUGE;
+	if (huge_advised(plan, &from, &to) < 0 ||
+	    access("/sys/kernel/mm/transparent_hugepage", F_OK) != 0) {
+		printf("pages: plans not checked (no /proc/self/smaps or no transparent huge "
+		       "pages)\n");
+		return;
+	}
+	(void)madvise(plan, 5 * HUGE, MADV_NOHUGEPAGE); /* no advice of its own */
+	/* 300 KiB inside the second huge page: that huge page, whole. */
+	pages_plan(plan + HUGE + 100, 300 * 1024);
+	CHECK_INT(huge_advised(plan + HUGE + 100, &from, &to), 1);
+	CHECK(from == (uintptr_t)(plan + HUGE));
+	CHECK(to == (uintptr_t)(plan + 2 * HUGE));
+	CHECK_INT(huge_advised(plan, &from, &to), 0);
+	CHECK_INT(huge_advised(plan + 2 * HUGE, &from, &to), 0);
+	/* 300 KiB across the boundary of the fourth and fifth fills less than an eighth of
+	 * the two: no advice; 600 KiB across it, both. */
+	pages_plan(plan + 4 * HUGE - 100 * 1024, 300 * 1024);
+	CHECK_INT(huge_advised(plan + 4 * HUGE - 4096, &from, &to), 0);
+	CHECK_INT(huge_advised(plan + 4 * HUGE, &from, &to), 0);
+	pages_plan(plan + 4 * HUGE - 100 * 1024, 600 * 1024);
+	CHECK_INT(huge_advised(plan + 4 * HUGE - 4096, &from, &to), 1);
+	CHECK(from == (uintptr_t)(plan + 3 * HUGE));
+	CHECK(to == (uintptr_t)(plan + 5 * HUGE));
+	/* Nothing planned was written. */
+	for (i = 0; i < 5; i++)
+		CHECK_INT(resident_in(plan, (size_t)i * HUGE, (size_t)(i + 1) * HUGE), 0);
+	/* A scene file of 100 KiB leaves the scene's arrays on small pages; one of 200 KiB
+	 * plans them all (the object array's middle stands for them). */
+	scene_plan_pages(&plan_scene, 100 * 1024);
+	CHECK_INT(huge_advised(middle, &from, &to), 0);
+	scene_plan_pages(&plan_scene, 200 * 1024);
+	CHECK_INT(huge_advised(middle, &from, &to), 1);
+	CHECK(from <= (uintptr_t)&plan_scene.objects[0]);
+	CHECK(to >= (uintptr_t)(&plan_scene + 1));
+}
+
 void suite_pages(void)
 {
 	const size_t size = 16, capacity = ARRAY_BYTES / 16, chunk = 65536 / 16 + 1;
@@ -168,11 +219,13 @@ void suite_pages(void)
 	CHECK_INT(resident(0, ARRAY_BYTES), all);
 	CHECK_INT(resident(ARRAY_BYTES, ARRAY_BYTES + page), 0);
 	check_big_array(page);
+	check_plan();
 }
 #else
 void suite_pages(void)
 {
 	/* No requests here: pages.h's calls compile to nothing. */
 	pages_prepare(NULL, 0);
+	pages_plan(NULL, 0);
 }
 #endif
