@@ -48,7 +48,9 @@ void pages_plan(void *start, size_t bytes)
 #ifdef MADV_HUGEPAGE
 	/* The huge pages the range touches, whole: the range's first and last bytes may
 	 * share theirs with other arrays, which is as good, before any of their pages
-	 * exist (a huge page is only made where a fault finds none of its pages). */
+	 * exist (a huge page is only made where a fault finds none of its pages). So a
+	 * range is planned only well inside the static data: one in its first huge page
+	 * would round down into the program's other mappings and advise them too. */
 	unsigned char *from = (unsigned char *)start - (uintptr_t)start % HUGE_PAGE;
 	size_t span = (size_t)((unsigned char *)start - from) + bytes;
 	span += to_boundary(from + span, HUGE_PAGE);

@@ -17,8 +17,9 @@ void pages_prepare(void *start, size_t bytes);
 
 /* Says that [start, start + bytes) is about to be written: a range that fills enough of
  * the huge pages it touches (pages.c) is then given them, whole, where its pages first
- * fault. Writes nothing and makes nothing present: a huge page of the range that is
- * never written costs nothing. */
+ * fault (the range's first and last huge pages with whatever else they hold: plan
+ * arrays well inside the static data). Writes nothing and makes nothing present: a huge
+ * page of the range that is never written costs nothing. */
 void pages_plan(void *start, size_t bytes);
 
 /* For an array of `capacity` elements of `size` bytes filled from its start, about to

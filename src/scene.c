@@ -22,22 +22,33 @@ void scene_init(scene *s, const char *file)
 	s->vertex_count = s->plane_count = 0;
 }
 
-/* A scene file this long fills arrays of hundreds of kilobytes: its objects take 30-150
- * bytes of text each (an NFF sphere or a polygon's vertex line) and 88 bytes of the object
- * array, a polygon's vertex 24 bytes of vertices and 32 of edge lines (and a patch's 24 of
- * normals). In huge pages those arrays took the CPU time of a run of SPD teapot-s12 at
- * 2x2 pixels (reading, building, start and exit) from 21.6 ms to 15.9 ms, mount's from
- * 16.2 ms to 12.8 ms; in small pages, asked for a chunk at a time, every 4 KiB cost 7 us.
- * A shorter file keeps small pages: its arrays fill too little of a huge page for one to
- * pay. */
-#define SCENE_TEXT_HUGE 131072L
+/* The bytes of an array of `capacity` bytes that text_bytes of scene text fill, about:
+ * one and a half for a byte of text. SPD's scenes fill 0.4-2.1 (teapot-s12's 1.5 MB its
+ * objects' 0.8 MB, vertices' 0.7 MB, normals' 0.7 MB and edge lines' 0.9 MB; balls' 0.3
+ * MB its objects' 0.65 MB). An array so planned takes huge pages where that fills enough
+ * of them (pages_plan): in huge pages SPD teapot-s12's run at 2x2 pixels (reading,
+ * building, start and exit) took 15.2 ms of CPU time against 19.9 ms, mount's 11.6 ms
+ * against 14.6 ms; in small pages, asked for a chunk at a time, each 4 KiB cost 7 us. A
+ * short file's arrays stay on small pages, and so do those that hold a few numbers for
+ * each polygon (its runs, its disc). */
+static size_t planned(long text_bytes, size_t capacity)
+{
+	size_t guess = (size_t)text_bytes + (size_t)text_bytes / 2;
+	return guess < capacity ? guess : capacity;
+}
 
 void scene_plan_pages(scene *s, long text_bytes)
 {
-	/* The whole scene: only the huge pages that are written are made, and an array
-	 * the scene does not use is not written. */
-	if (text_bytes >= SCENE_TEXT_HUGE)
-		pages_plan(s, sizeof *s);
+	if (text_bytes <= 0)
+		return;
+	/* The objects' first huge page may hold the materials and lights too. */
+	pages_plan(s->objects, planned(text_bytes, sizeof s->objects));
+	pages_plan(s->vertices, planned(text_bytes, sizeof s->vertices));
+	pages_plan(s->normals, planned(text_bytes, sizeof s->normals));
+	pages_plan(s->planes, planned(text_bytes, sizeof s->planes));
+#if POLYGON_EDGES
+	pages_plan(s->edges, planned(text_bytes, sizeof s->edges));
+#endif
 }
 
 void scene_cover(real *extent, vec3 p, real r)

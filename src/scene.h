@@ -165,7 +165,7 @@ typedef struct {
 void scene_init(scene *s, const char *file);
 
 /* Plans the memory of the arrays a scene file of `text_bytes` bytes fills (pages.h),
- * before it is read: a long file's in huge pages. */
+ * before anything is written to them: a long file's in huge pages. */
 void scene_plan_pages(scene *s, long text_bytes);
 
 /* Grows *extent to cover every coordinate of p, and r beyond it. */

@@ -5,6 +5,8 @@
  * See LICENSE for copyright and licence. */
 #define _DEFAULT_SOURCE 1 /* mincore */
 
+#include "intersect.h"
+#include "load.h"
 #include "pages.h"
 #include "scene.h"
 #include "test.h"
@@ -12,6 +14,7 @@
 #if defined(__linux__) && !defined(RT_NO_PAGES_AHEAD)
 #include <stdint.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/mman.h>
 #include <unistd.h>
@@ -136,12 +139,12 @@ static void check_big_array(size_t page)
  * only: what the system then gives (a huge page, or small pages where it has none to
  * spare) is its own. Written by nothing: 10 MiB from a huge page's boundary. */
 static unsigned char untouched_plan[(10 << 20) + (2 << 20)];
-static scene plan_scene;
-
+static scene plan_scene, read_scene, short_scene;
 static void check_plan(void)
 {
 	unsigned char *plan = untouched_plan;
-	unsigned char *middle = (unsigned char *)&plan_scene.objects[RT_MAX_OBJECTS / 2];
+	unsigned char *objects = (unsigned char *)plan_scene.objects;
+	unsigned char *vertices = (unsigned char *)plan_scene.vertices;
 	uintptr_t from = 0, to = 0;
 	int i;
 	plan += (HUGE - (size_t)((uintptr_t)plan % HUGE)) % HUGE;
@@ -171,14 +174,83 @@ static void check_plan(void)
 	/* Nothing planned was written. */
 	for (i = 0; i < 5; i++)
 		CHECK_INT(resident_in(plan, (size_t)i * HUGE, (size_t)(i + 1) * HUGE), 0);
-	/* A scene file of 100 KiB leaves the scene's arrays on small pages; one of 200 KiB
-	 * plans them all (the object array's middle stands for them). */
+	/* A scene file of 100 KiB leaves the scene's arrays on small pages (150 KiB of each
+	 * planned); one of 1 MiB plans 1.5 MiB of each from its start, and no further. */
 	scene_plan_pages(&plan_scene, 100 * 1024);
-	CHECK_INT(huge_advised(middle, &from, &to), 0);
-	scene_plan_pages(&plan_scene, 200 * 1024);
-	CHECK_INT(huge_advised(middle, &from, &to), 1);
-	CHECK(from <= (uintptr_t)&plan_scene.objects[0]);
-	CHECK(to >= (uintptr_t)(&plan_scene + 1));
+	CHECK_INT(huge_advised(objects + 65536, &from, &to), 0);
+	scene_plan_pages(&plan_scene, 1024 * 1024);
+	CHECK_INT(huge_advised(objects + 1024 * 1024, &from, &to), 1);
+	CHECK(from <= (uintptr_t)objects);
+	CHECK(to >= (uintptr_t)(objects + 1536 * 1024));
+	if (objects + 1536 * 1024 + 3 * HUGE < vertices)
+		CHECK(to <= (uintptr_t)(objects + 1536 * 1024 + 2 * HUGE));
+	CHECK_INT(huge_advised(vertices + 1024 * 1024, &from, &to), 1);
+	/* Past the vertices' plan: nothing, unless it is the next array's first huge page. */
+	if (vertices + 1600 * 1024 + 3 * HUGE < (unsigned char *)plan_scene.normals)
+		CHECK_INT(huge_advised(vertices + 1600 * 1024 + HUGE, &from, &to), 0);
+}
+
+/* Writes a scene of `bytes` bytes or a little more (small spheres in a row) to a new
+ * temporary file, whose name goes in path; 0 if it cannot. */
+static int write_long_scene(char *path, long bytes)
+{
+	int fd = mkstemp(path);
+	FILE *f = fd >= 0 ? fdopen(fd, "w") : NULL;
+	long i;
+	int ok;
+	if (!f) {
+		if (fd >= 0)
+			close(fd);
+		return 0;
+	}
+	fprintf(f, "v\nfrom 0 0 -10\nat 0 0 0\nup 0 1 0\nangle 40\nhither 1\nresolution 8 8\n"
+		   "l 0 10 -10\nf 1 0 0 1 0 1 0 1\n");
+	for (i = 0; ftell(f) < bytes; i++)
+		fprintf(f, "s %ld.5 %ld.25 %ld 0.125\n", i % 100, i / 100 % 100, i / 10000);
+	ok = fclose(f) == 0;
+	return ok;
+}
+
+/* The plans as rt makes them: load_scene_file plans the scene from the file's length,
+ * the build the wide nodes from the binary tree's size. Their advice is cleared first,
+ * so that only this reading and this build can have made it. */
+static void check_plans_made(void)
+{
+	char long_path[] = "/tmp/rt-test-pages-XXXXXX", short_path[] = "/tmp/rt-test-pages-XXXXXX";
+	uintptr_t from = 0, to = 0;
+	const accel *a;
+	if (!write_long_scene(long_path, 600 * 1024)) {
+		printf("pages: plans as made not checked (no temporary file)\n");
+		return;
+	}
+	if (!write_long_scene(short_path, 60 * 1024)) {
+		remove(long_path);
+		printf("pages: plans as made not checked (no temporary file)\n");
+		return;
+	}
+	(void)madvise(&read_scene, sizeof read_scene, MADV_NOHUGEPAGE);
+	(void)madvise(&short_scene, sizeof short_scene, MADV_NOHUGEPAGE);
+	CHECK_INT(load_scene_file(&read_scene, long_path), 1);
+	CHECK_INT(load_scene_file(&short_scene, short_path), 1);
+	CHECK(read_scene.object_count > 10000);
+	CHECK_INT(huge_advised((unsigned char *)read_scene.objects + 512 * 1024, &from, &to), 1);
+	/* (Past the first 2 MiB of the short scene: a huge page of the array before it may
+	 * reach that far.) */
+	CHECK_INT(huge_advised((unsigned char *)short_scene.objects + HUGE + HUGE / 2, &from, &to),
+		  0);
+#if BVH_WIDE
+	a = accel_build(&short_scene);
+	(void)madvise((void *)(uintptr_t)a->tree.wide, sizeof a->tree.wide, MADV_NOHUGEPAGE);
+	a = accel_build(&read_scene);
+	CHECK(a->tree.wide_count > 1000);
+	CHECK_INT(huge_advised((const unsigned char *)&a->tree.wide[a->tree.wide_count / 2],
+			       &from, &to),
+		  1);
+#else
+	(void)a;
+#endif
+	remove(long_path);
+	remove(short_path);
 }
 
 void suite_pages(void)
@@ -220,6 +292,7 @@ void suite_pages(void)
 	CHECK_INT(resident(ARRAY_BYTES, ARRAY_BYTES + page), 0);
 	check_big_array(page);
 	check_plan();
+	check_plans_made();
 }
 #else
 void suite_pages(void)
