@@ -105,8 +105,11 @@ typedef struct {
 	 * unbounded_count) are objects without finite bounds (planes, open polyhedra),
 	 * tested for every ray; the tree's leaves hold the rest. */
 	int node_count, unbounded_count;
-	bvh_node nodes[2 * RT_MAX_OBJECTS];
+	/* The index first: the tree begins in the program's first huge page of static data,
+	 * among small arrays written at start, where no array can have huge pages (pages.h),
+	 * and the index is the smallest of the three. */
 	int index[RT_MAX_OBJECTS];
+	bvh_node nodes[2 * RT_MAX_OBJECTS];
 	int wide_count; /* BVH_WIDE: the wide tree, its root at wide[0], when node_count > 0 */
 	bvh_wide_node wide[BVH_WIDE_NODES];
 } bvh_tree;

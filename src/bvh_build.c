@@ -506,6 +506,8 @@ void bvh_build(bvh_tree *t, const scene *s)
 		for (i = boxes - 1; i >= 0; i--)
 			items[t->unbounded_count + i] = items[i];
 	pages_prepare(t->index, (size_t)(t->unbounded_count + boxes) * sizeof t->index[0]);
+	/* A tree of n boxes has at most 2n - 1 nodes. */
+	pages_plan(t->nodes, 2 * (size_t)boxes * sizeof t->nodes[0]);
 	pages_ahead(t->nodes, sizeof t->nodes[0], 0, 1, 2 * RT_MAX_OBJECTS); /* the root */
 	t->node_count = 1;
 	{
@@ -515,9 +517,7 @@ void bvh_build(bvh_tree *t, const scene *s)
 	for (i = t->unbounded_count; i < t->unbounded_count + boxes; i++)
 		t->index[i] = items[i].object;
 #if BVH_WIDE
-	/* No more wide nodes than the binary tree has inner ones. (The binary nodes are not
-	 * planned: they start within the first huge page of the program's static data, which
-	 * holds much else.) */
+	/* No more wide nodes than the binary tree has inner ones. */
 	pages_plan(t->wide, ((size_t)t->node_count / 2 + 1) * sizeof t->wide[0]);
 	t->wide_count = 0;
 	(void)wide_collapse(t, 0);
