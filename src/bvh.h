@@ -105,13 +105,16 @@ typedef struct {
 	 * unbounded_count) are objects without finite bounds (planes, open polyhedra),
 	 * tested for every ray; the tree's leaves hold the rest. */
 	int node_count, unbounded_count;
-	/* The index first: the tree may begin in the first huge page of the static data,
-	 * among small arrays written at start, where no huge page can be made (pages.h);
-	 * the index is the smallest of the three, and the nodes then begin 16 MB on (8 MB
-	 * on a 32-bit host), where the build plans them. */
+	int wide_count; /* BVH_WIDE: the wide tree, its root at wide[0], when node_count > 0 */
+	/* The index first of the arrays: the tree may begin in the first huge page of the
+	 * static data, among small arrays written at start, where no huge page can be made
+	 * (pages.h); the index is the smallest of the three, and the nodes then begin 16 MB
+	 * on (8 MB on a 32-bit host), where the build plans them. */
 	int index[RT_MAX_OBJECTS];
 	bvh_node nodes[2 * RT_MAX_OBJECTS];
-	int wide_count; /* BVH_WIDE: the wide tree, its root at wide[0], when node_count > 0 */
+	/* Nothing written just before it: the build plans its huge pages (pages.h) once the
+	 * binary tree's size is known, and a count written beside it earlier took the first
+	 * one (SPD rings' wide nodes then all on small pages in some runs). */
 	bvh_wide_node wide[BVH_WIDE_NODES];
 } bvh_tree;
 
