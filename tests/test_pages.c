@@ -78,18 +78,27 @@ static int huge_advised(const unsigned char *a, uintptr_t *from, uintptr_t *to)
 	return advised;
 }
 
+/* Whether huge-page advice can be seen here (/proc/self/smaps, of which `probe` is any
+ * mapped address, and transparent huge pages); if not, says that `what` is not checked. */
+static int advice_seen(const unsigned char *probe, const char *what)
+{
+	uintptr_t from, to;
+	if (huge_advised(probe, &from, &to) >= 0 &&
+	    access("/sys/kernel/mm/transparent_hugepage", F_OK) == 0)
+		return 1;
+	printf("pages: %s not checked (no /proc/self/smaps or no transparent huge pages)\n",
+	       what);
+	return 0;
+}
+
 /* The big array's advice: the one whole huge page its requests entered fresh (the third
  * from the aligned start, at `boundary`), and nothing before or after it. */
 static void check_big_advice(size_t boundary)
 {
 	uintptr_t from = 0, to = 0;
-	int advised = huge_advised(big + boundary, &from, &to);
-	if (advised < 0 || access("/sys/kernel/mm/transparent_hugepage", F_OK) != 0) {
-		printf("pages: huge-page advice not checked (no /proc/self/smaps or no transparent "
-		       "huge pages)\n");
+	if (!advice_seen(big, "huge-page advice"))
 		return;
-	}
-	CHECK_INT(advised, 1);
+	CHECK_INT(huge_advised(big + boundary, &from, &to), 1);
 	CHECK(from == (uintptr_t)(big + boundary));
 	CHECK(to == (uintptr_t)(big + boundary + HUGE));
 	CHECK_INT(huge_advised(big, &from, &to), 0);
@@ -148,12 +157,8 @@ static void check_plan(void)
 	uintptr_t from = 0, to = 0;
 	int i;
 	plan += (HUGE - (size_t)((uintptr_t)plan % HUGE)) % HUGE;
-	if (huge_advised(plan, &from, &to) < 0 ||
-	    access("/sys/kernel/mm/transparent_hugepage", F_OK) != 0) {
-		printf("pages: plans not checked (no /proc/self/smaps or no transparent huge "
-		       "pages)\n");
+	if (!advice_seen(plan, "plans"))
 		return;
-	}
 	(void)madvise(plan, 5 * HUGE, MADV_NOHUGEPAGE); /* no advice of its own */
 	/* 300 KiB inside the second huge page: that huge page, whole. */
 	pages_plan(plan + HUGE + 100, 300 * 1024);
@@ -197,7 +202,6 @@ static int write_long_scene(char *path, long bytes)
 	int fd = mkstemp(path);
 	FILE *f = fd >= 0 ? fdopen(fd, "w") : NULL;
 	long i;
-	int ok;
 	if (!f) {
 		if (fd >= 0)
 			close(fd);
@@ -207,25 +211,25 @@ static int write_long_scene(char *path, long bytes)
 		   "l 0 10 -10\nf 1 0 0 1 0 1 0 1\n");
 	for (i = 0; ftell(f) < bytes; i++)
 		fprintf(f, "s %ld.5 %ld.25 %ld 0.125\n", i % 100, i / 100 % 100, i / 10000);
-	ok = fclose(f) == 0;
-	return ok;
+	return fclose(f) == 0;
 }
 
 /* The plans as rt makes them: load_scene_file plans the scene from the file's length,
  * the build the binary nodes from the number of boxes and the wide nodes from the binary
- * tree's size. Their advice is cleared first,
- * so that only this reading and this build can have made it. */
+ * tree's size. Their advice is cleared first, so that only this reading and this build
+ * can have made it. */
 static void check_plans_made(void)
 {
 	char long_path[] = "/tmp/rt-test-pages-XXXXXX", short_path[] = "/tmp/rt-test-pages-XXXXXX";
 	uintptr_t from = 0, to = 0;
 	const accel *a;
-	if (!write_long_scene(long_path, 600 * 1024)) {
-		printf("pages: plans as made not checked (no temporary file)\n");
+	int written;
+	if (!advice_seen((const unsigned char *)&read_scene, "plans as made"))
 		return;
-	}
-	if (!write_long_scene(short_path, 60 * 1024)) {
-		remove(long_path);
+	written = write_long_scene(long_path, 600 * 1024);
+	if (!written || !write_long_scene(short_path, 60 * 1024)) {
+		if (written)
+			remove(long_path);
 		printf("pages: plans as made not checked (no temporary file)\n");
 		return;
 	}
