@@ -85,7 +85,7 @@ static real slab_distance(real offset, unit d, int far)
 }
 
 /* box_hit's interval for a ray with a divided axis: every distance a quotient. */
-static int box_hit_divided(const bvh_node *n, const slab_ray *r, real tmax, real *tenter)
+static int box_hit_divided(const bvh_point box[2], const slab_ray *r, real tmax, real *tenter)
 {
 	real tnear = REAL_C(0.0), tfar = tmax;
 	int axis;
@@ -93,8 +93,8 @@ static int box_hit_divided(const bvh_node *n, const slab_ray *r, real tmax, real
 		int near = axis == 0 ? r->near_x : axis == 1 ? r->near_y : r->near_z;
 		unit d = axis == 0 ? r->dir.x : axis == 1 ? r->dir.y : r->dir.z;
 		real o = vec_get(r->origin, axis);
-		real t0 = slab_distance(real_add(bvh_bound(n, near, axis), -o), d, 0);
-		real t1 = slab_distance(real_add(bvh_bound(n, !near, axis), -o), d, 1);
+		real t0 = slab_distance(real_add(bvh_point_get(&box[near], axis), -o), d, 0);
+		real t1 = slab_distance(real_add(bvh_point_get(&box[!near], axis), -o), d, 1);
 		tnear = t0 > tnear ? t0 : tnear;
 		tfar = t1 < tfar ? t1 : tfar;
 	}
@@ -102,23 +102,23 @@ static int box_hit_divided(const bvh_node *n, const slab_ray *r, real tmax, real
 	return slab_interval_open(tnear, tfar);
 }
 
-/* Does the ray enter node n's box before tmax? *tenter gets where. The comparisons are
- * written so that NaN from 0 * inf (a ray lying in a slab plane) leaves the interval as
- * it was instead of poisoning it. */
-static inline int box_hit(const bvh_node *n, const slab_ray *r, real tmax, real *tenter)
+/* Does the ray enter the box of corners box[0] and box[1] before tmax? *tenter gets
+ * where. The comparisons are written so that NaN from 0 * inf (a ray lying in a slab
+ * plane) leaves the interval as it was instead of poisoning it. */
+static inline int box_hit(const bvh_point box[2], const slab_ray *r, real tmax, real *tenter)
 {
 	real tnear = REAL_C(0.0), tfar = tmax;
 	real x0, x1, y0, y1, z0, z1;
 	if (REAL_SATURATES && r->divided)
-		return box_hit_divided(n, r, tmax, tenter);
+		return box_hit_divided(box, r, tmax, tenter);
 	/* Saturating differences (real_add): a box of an object that reaches the edge of
 	 * fixed point's range, less a far origin, would overflow. */
-	x0 = real_mul(real_add((real)n->bounds[r->near_x].x, -r->origin.x), r->inv.x);
-	x1 = real_mul(real_add((real)n->bounds[!r->near_x].x, -r->origin.x), r->inv.x);
-	y0 = real_mul(real_add((real)n->bounds[r->near_y].y, -r->origin.y), r->inv.y);
-	y1 = real_mul(real_add((real)n->bounds[!r->near_y].y, -r->origin.y), r->inv.y);
-	z0 = real_mul(real_add((real)n->bounds[r->near_z].z, -r->origin.z), r->inv.z);
-	z1 = real_mul(real_add((real)n->bounds[!r->near_z].z, -r->origin.z), r->inv.z);
+	x0 = real_mul(real_add((real)box[r->near_x].x, -r->origin.x), r->inv.x);
+	x1 = real_mul(real_add((real)box[!r->near_x].x, -r->origin.x), r->inv.x);
+	y0 = real_mul(real_add((real)box[r->near_y].y, -r->origin.y), r->inv.y);
+	y1 = real_mul(real_add((real)box[!r->near_y].y, -r->origin.y), r->inv.y);
+	z0 = real_mul(real_add((real)box[r->near_z].z, -r->origin.z), r->inv.z);
+	z1 = real_mul(real_add((real)box[!r->near_z].z, -r->origin.z), r->inv.z);
 	tnear = x0 > tnear ? x0 : tnear;
 	tnear = y0 > tnear ? y0 : tnear;
 	tnear = z0 > tnear ? z0 : tnear;

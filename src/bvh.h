@@ -11,8 +11,9 @@
 
 #define BVH_MAX_DEPTH 60 /* deeper nodes become leaves; bounds the traversal stacks */
 
-/* Floating-point types search a wide tree with float boxes; fixed point, which uses no
- * floating point at all, searches the binary tree it is collapsed from. */
+/* Floating-point types search a wide tree with float boxes, the binary tree of the
+ * build's splits collapsed as it is made; fixed point, which uses no floating point at
+ * all, searches that binary tree itself. */
 #define BVH_WIDE (!REAL_FLOAT_FREE)
 /* Lanes of a wide node: eight, which cuts the steps a ray takes through a tree of
  * four-wide nodes by about a third, and with them the branches it mispredicts. */
@@ -57,7 +58,7 @@ static inline float float_outward(real x, int up)
 }
 #endif
 
-/* A corner of a binary node's box: in floating-point types rounded outwards to float
+/* A corner of a box of the tree: in floating-point types rounded outwards to float
  * (half the memory of double, a third of long double's: a million objects' tree stays
  * small), which the wide tree's lanes take as they are. */
 #if BVH_WIDE
@@ -68,7 +69,13 @@ typedef struct {
 typedef vec3 bvh_point;
 #endif
 
-/* A node of the binary tree (bvh_build.c). */
+/* A coordinate of corner p, as a real. */
+static inline real bvh_point_get(const bvh_point *p, int axis)
+{
+	return axis == 0 ? (real)p->x : axis == 1 ? (real)p->y : (real)p->z;
+}
+
+/* A node of the binary tree (bvh_build.c), which fixed point searches. */
 typedef struct {
 	bvh_point bounds[2]; /* lower and upper corner */
 	int start;   /* leaf: first slot in scene.bvh_index; inner: left child (right = start+1) */
@@ -79,8 +86,7 @@ typedef struct {
 /* Corner `side` (0 lower, 1 upper) of node n's box on an axis. */
 static inline real bvh_bound(const bvh_node *n, int side, int axis)
 {
-	const bvh_point *p = &n->bounds[side];
-	return axis == 0 ? (real)p->x : axis == 1 ? (real)p->y : (real)p->z;
+	return bvh_point_get(&n->bounds[side], axis);
 }
 
 /* A node of the wide tree: the binary tree with every node's children replaced by
@@ -101,21 +107,25 @@ typedef struct {
 
 
 typedef struct {
-	/* node_count 0 means no hierarchy (small scenes test every object). index[0 ..
+	/* node_count 0 means no hierarchy (small scenes test every object); else the nodes
+	 * of the binary tree the splits make (in the floating types a count only: that tree
+	 * is collapsed into the wide one as it is made, bvh_build.c). index[0 ..
 	 * unbounded_count) are objects without finite bounds (planes, open polyhedra),
 	 * tested for every ray; the tree's leaves hold the rest. */
 	int node_count, unbounded_count;
 	int wide_count; /* BVH_WIDE: the wide tree, its root at wide[0], when node_count > 0 */
 	/* The index first of the arrays: the tree may begin in the first huge page of the
 	 * static data, among small arrays written at start, where no huge page can be made
-	 * (pages.h); the index is the smallest of the three, and the nodes then begin 16 MB
-	 * on (8 MB on a 32-bit host), where the build plans them. */
+	 * (pages.h); the index is the smallest, and the nodes then begin 16 MB on (8 MB on
+	 * a 32-bit host), where the build plans them. Nothing is written just before them
+	 * either: a count written beside the wide nodes before their plan took its first
+	 * huge page (SPD rings' wide nodes then all on small pages in some runs). */
 	int index[RT_MAX_OBJECTS];
-	bvh_node nodes[2 * RT_MAX_OBJECTS];
-	/* Nothing written just before it: the build plans its huge pages (pages.h) once the
-	 * binary tree's size is known, and a count written beside it earlier took the first
-	 * one (SPD rings' wide nodes then all on small pages in some runs). */
+#if BVH_WIDE
 	bvh_wide_node wide[BVH_WIDE_NODES];
+#else
+	bvh_node nodes[2 * RT_MAX_OBJECTS];
+#endif
 } bvh_tree;
 
 /* Builds the hierarchy of s into t; scenes smaller than RT_BVH_MIN_OBJECTS get none

@@ -1,7 +1,7 @@
 /* bvh_build.c - builds the bounding volume hierarchy over the scene's objects, in static
- * arrays, once after parsing: a binary tree by the binned surface area heuristic, then
- * (floating-point types) the same tree collapsed into nodes of WIDE_LANES children, whose
- * float boxes bvh.c tests several at once.
+ * arrays, once after parsing: a binary tree by the binned surface area heuristic, which
+ * fixed point keeps and the floating-point types collapse, as its nodes are made, into
+ * nodes of WIDE_LANES children whose float boxes bvh.c tests several at once.
  * See LICENSE for copyright and licence. */
 #include "bvh.h"
 
@@ -81,7 +81,8 @@ static inline bvh_point item_centre(const build_item *o)
 }
 #endif
 
-static inline centre_coord centre_get(bvh_point c, int axis)
+/* A coordinate of a centre or a corner. */
+static inline centre_coord point_get(bvh_point c, int axis)
 {
 	return axis == 0 ? c.x : axis == 1 ? c.y : c.z;
 }
@@ -122,8 +123,8 @@ static axis_bins axis_bins_make(bvh_point clo, bvh_point chi, int axis, int coun
 {
 	axis_bins a;
 	a.count = count;
-	a.lo = centre_get(clo, axis);
-	a.extent = centre_get(chi, axis) - a.lo;
+	a.lo = point_get(clo, axis);
+	a.extent = point_get(chi, axis) - a.lo;
 #if BVH_WIDE
 	a.scale = a.extent > 0.0f ? (float)count / a.extent : 0.0f;
 #else
@@ -149,9 +150,9 @@ static inline int bin_at(const axis_bins *a, centre_coord c)
 /* Nodes of at most this many objects (most of a tree's nodes) are split by sorting their
  * centres on each axis and pricing every plane between them: exact where binning is not,
  * and with few objects far cheaper than sweeping BINS bins on three axes, which made
- * nearly all of a small scene's build. Fixed point keeps its bins (1: no node is that
- * small), so that its tree, and its images at the edge of its range, stay as they were. */
-#define SORTED_MAX (BVH_WIDE ? 16 : 1)
+ * nearly all of a small scene's build. Fixed point keeps its bins (no sorted split), so
+ * that its tree, and its images at the edge of its range, stay as they were. */
+#define SORTED_MAX 16
 
 /* The cost of a split, relative to a leaf's of one intersection per object: a traversal
  * step plus each side's objects weighted by the chance that a ray entering the node
@@ -169,6 +170,7 @@ static int leaf_is_better(int best_axis, real best_cost, int count)
 	return best_axis < 0 || (best_cost >= real_from_int(count) && count <= MAX_LEAF);
 }
 
+#if BVH_WIDE
 /* sah_split for a node of at most SORTED_MAX objects: the objects are sorted by centre
  * on each axis, every plane between two different centres is priced, and the objects
  * are put in the best axis's order with the first `left` going left. */
@@ -180,13 +182,15 @@ static int sorted_split(int first, int count, const item_bounds *node, int *axis
 	real best_cost = REAL_MAX;
 	int best_axis = -1, best_left = 0, axis, i, j;
 	build_item sorted[SORTED_MAX];
+	if (count < 2 || count > SORTED_MAX)
+		return 0; /* (never: sah_split sends only 2 .. SORTED_MAX) */
 	for (axis = 0; axis < 3; axis++) {
-		centre_coord key[SORTED_MAX];
+		centre_coord key[SORTED_MAX] = {0}; /* (set before read; the lint cannot tell) */
 		real2 right_area[SORTED_MAX];
 		bvh_point run_lo, run_hi;
 		/* Insertion sort: stable, and at this size the quickest. */
 		for (i = 0; i < count; i++) {
-			centre_coord k = centre_get(item_centre(&items[first + i]), axis);
+			centre_coord k = point_get(item_centre(&items[first + i]), axis);
 			for (j = i; j > 0 && key[j - 1] > k; j--) {
 				key[j] = key[j - 1];
 				order[axis][j] = order[axis][j - 1];
@@ -230,6 +234,7 @@ static int sorted_split(int first, int count, const item_bounds *node, int *axis
 	*axis_out = best_axis;
 	return best_left;
 }
+#endif
 
 /* Chooses the split of items[first .. first+count), whose bounds are `node`, with the
  * lowest SAH cost over the bins of centres on each axis and partitions the objects by it.
@@ -246,8 +251,10 @@ static int sah_split(int first, int count, const item_bounds *node, int *axis_ou
 	bvh_point bin_lo[3][FINE_BINS], bin_hi[3][FINE_BINS];
 	int best_axis = -1, best_plane = 0, axis, i, left;
 	int bins_used = count > FINE_BINS_FROM ? FINE_BINS : BINS;
+#if BVH_WIDE
 	if (count <= SORTED_MAX)
 		return sorted_split(first, count, node, axis_out, child);
+#endif
 	for (axis = 0; axis < 3; axis++) {
 		bins[axis] = axis_bins_make(node->clo, node->chi, axis, bins_used);
 		for (i = 0; i < bins_used; i++) {
@@ -263,7 +270,7 @@ static int sah_split(int first, int count, const item_bounds *node, int *axis_ou
 			int b;
 			if (!(bins[axis].extent > 0))
 				continue;
-			b = bin_at(&bins[axis], centre_get(centre, axis));
+			b = bin_at(&bins[axis], point_get(centre, axis));
 			bin_count[axis][b]++;
 			points_grow(&bin_lo[axis][b], &bin_hi[axis][b], &o->lo, &o->hi);
 		}
@@ -331,7 +338,7 @@ static int sah_split(int first, int count, const item_bounds *node, int *axis_ou
 		for (i = first; i < first + count; i++) {
 			build_item item = items[i];
 			bvh_point centre = item_centre(&item);
-			int right = bin_at(&bins[best_axis], centre_get(centre, best_axis)) > best_plane;
+			int right = bin_at(&bins[best_axis], point_get(centre, best_axis)) > best_plane;
 			points_grow(&child[right].clo, &child[right].chi, &centre, &centre);
 			items[i] = items[to];
 			items[to] = item;
@@ -343,6 +350,115 @@ static int sah_split(int first, int count, const item_bounds *node, int *axis_ou
 	return left > 0 && left < count ? left : 0;
 }
 
+/* How items[first .. first+count), whose bounds are `b`, a node at `depth` in the binary
+ * tree, are split: the number that go left (0: the node is a leaf), child[0] and child[1]
+ * their bounds, *axis the split's. Deeper than BVH_MAX_DEPTH a node is a leaf. */
+static int node_split(int first, int count, const item_bounds *b, int depth, int *axis,
+		      item_bounds child[2])
+{
+	int left = 0;
+	*axis = 0;
+	if (count > 1 && depth < BVH_MAX_DEPTH) {
+		left = sah_split(first, count, b, axis, child);
+		/* Too many objects for one leaf but no plane between their centres (all
+		 * centres equal): split the list in half. */
+		if (!left && count > MAX_LEAF) {
+			left = count / 2;
+			*axis = 0;
+			child[0] = bounds_of(first, left);
+			child[1] = bounds_of(first + left, count - left);
+		}
+	}
+	return left;
+}
+
+#if BVH_WIDE
+/* A lane of a wide node being built: a subtree of the binary tree the splits make, which
+ * is never stored (fixed point searches it; the floating types search only the wide
+ * tree, and writing it took a quarter of a million spheres' memory): items[first ..
+ * first+count), their bounds and their box's area, the node's depth in the binary tree,
+ * and its split, made as the lane is made (left 0: a leaf). */
+typedef struct {
+	item_bounds bounds, child[2];
+	real2 area;
+	int first, count, depth, left;
+} wide_lane;
+
+/* Makes lane l of items[first .. first+count), whose bounds are b, at binary depth
+ * `depth`, and splits it; t counts the binary nodes the splits make. */
+static void lane_make(bvh_tree *t, wide_lane *l, int first, int count, const item_bounds *b,
+		      int depth)
+{
+	int axis;
+	l->bounds = *b;
+	l->area = box_half_area(bvh_point_vec(b->lo), bvh_point_vec(b->hi));
+	l->first = first;
+	l->count = count;
+	l->depth = depth;
+	l->left = node_split(first, count, b, depth, &axis, l->child);
+	if (l->left)
+		t->node_count += 2;
+}
+
+/* Lane `side` (0 left, 1 right) of split lane l: its child. */
+static void lane_child(bvh_tree *t, wide_lane *child, const wide_lane *l, int side)
+{
+	if (side)
+		lane_make(t, child, l->first + l->left, l->count - l->left, &l->child[1],
+			  l->depth + 1);
+	else
+		lane_make(t, child, l->first, l->left, &l->child[0], l->depth + 1);
+}
+
+/* Makes a new wide node of lane `root` (with its subtree); returns its number. The lanes
+ * start as root's children (or root itself, a leaf), and the split lane with the largest
+ * box is replaced by its two children until there are WIDE_LANES lanes or only leaves:
+ * the binary tree's nodes collapsed into nodes of WIDE_LANES children, each split made
+ * as its lane is opened. Every split partitions only its own items, so it finds them as
+ * a binary build, splitting node by node, would: the same tree. */
+static int wide_build(bvh_tree *t, const wide_lane *root)
+{
+	wide_lane lane[WIDE_LANES];
+	int n, i, axis, w = t->wide_count++;
+	bvh_wide_node *node = &t->wide[w];
+	pages_ahead(t->wide, sizeof t->wide[0], (size_t)w, 1, BVH_WIDE_NODES);
+	if (!root->left) {
+		lane[0] = *root;
+		n = 1;
+	} else {
+		lane_child(t, &lane[0], root, 0);
+		lane_child(t, &lane[1], root, 1);
+		n = 2;
+	}
+	while (n < WIDE_LANES) {
+		wide_lane opened;
+		int widest = -1;
+		for (i = 0; i < n; i++)
+			if (lane[i].left && (widest < 0 || lane[i].area > lane[widest].area))
+				widest = i;
+		if (widest < 0)
+			break;
+		opened = lane[widest];
+		lane_child(t, &lane[widest], &opened, 0);
+		lane_child(t, &lane[n++], &opened, 1);
+	}
+	for (i = 0; i < WIDE_LANES; i++) {
+		const wide_lane *l = i < n ? &lane[i] : NULL;
+		for (axis = 0; axis < 3; axis++) {
+			node->box[2 * axis][i] = l ? point_get(l->bounds.lo, axis) : INFINITY;
+			node->box[2 * axis + 1][i] = l ? point_get(l->bounds.hi, axis) : -INFINITY;
+		}
+		/* A leaf of one object (most leaves) names the object itself: the search
+		 * then skips a load from the index. */
+		node->count[i] = !l || l->left ? 0 : l->count == 1 ? WIDE_ONE_OBJECT : l->count;
+		node->child[i] = !l	       ? -1
+				 : l->left      ? wide_build(t, l)
+				 : l->count == 1 ? items[l->first].object
+						 : l->first;
+	}
+	return w;
+}
+#else
 /* Fills node `node` for items[first .. first+count), whose bounds are `b`, and recurses
  * into its children. Recursion depth is at most BVH_MAX_DEPTH. */
 static void build_node(bvh_tree *t, int node, int first, int count, const item_bounds *b,
@@ -350,20 +466,9 @@ static void build_node(bvh_tree *t, int node, int first, int count, const item_b
 {
 	bvh_node *n = &t->nodes[node];
 	item_bounds child[2];
-	int left = 0, axis = 0;
+	int axis, left = node_split(first, count, b, depth, &axis, child);
 	n->bounds[0] = b->lo;
 	n->bounds[1] = b->hi;
-	if (count > 1 && depth < BVH_MAX_DEPTH) {
-		left = sah_split(first, count, b, &axis, child);
-		/* Too many objects for one leaf but no plane between their centres (all
-		 * centres equal): split the list in half. */
-		if (!left && count > MAX_LEAF) {
-			left = count / 2;
-			axis = 0;
-			child[0] = bounds_of(first, left);
-			child[1] = bounds_of(first + left, count - left);
-		}
-	}
 	if (!left) {
 		n->start = first;
 		n->count = (short)count;
@@ -377,78 +482,6 @@ static void build_node(bvh_tree *t, int node, int first, int count, const item_b
 	t->node_count += 2;
 	build_node(t, n->start, first, left, &child[0], depth + 1);
 	build_node(t, n->start + 1, first + left, count - left, &child[1], depth + 1);
-}
-
-#if BVH_WIDE
-/* Corner `side` of node n's box. */
-static vec3 bvh_corner(const bvh_node *n, int side)
-{
-	return vec_make(bvh_bound(n, side, 0), bvh_bound(n, side, 1), bvh_bound(n, side, 2));
-}
-
-/* Fills wide node w's lanes from binary nodes lane[0 .. n) and recurses into the inner
- * ones; the rest of the lanes are empty (a box inside out, which no ray enters). */
-static void wide_fill(bvh_tree *t, int w, const int *lane, int n);
-
-/* Half the area of binary node b's box. */
-static real2 lane_area(const bvh_tree *t, int b)
-{
-	const bvh_node *c = &t->nodes[b];
-	return box_half_area(bvh_corner(c, 0), bvh_corner(c, 1));
-}
-
-/* Collapses binary node b (with its subtree) into a new wide node; returns its number.
- * The lanes start as b's children, and the inner lane with the largest box is opened
- * into its two children until there are WIDE_LANES lanes or only leaves. Each lane's
- * area is worked out once, as it comes in (worked out for every lane at every step, the
- * areas were nearly a third of the collapse's instructions). */
-static int wide_collapse(bvh_tree *t, int b)
-{
-	int lane[WIDE_LANES], n = 0, i, w = t->wide_count++;
-	real2 area[WIDE_LANES];
-	pages_ahead(t->wide, sizeof t->wide[0], (size_t)w, 1, BVH_WIDE_NODES);
-	if (t->nodes[b].count) {
-		lane[n++] = b;
-	} else {
-		lane[n++] = t->nodes[b].start;
-		lane[n++] = t->nodes[b].start + 1;
-	}
-	for (i = 0; i < n; i++)
-		area[i] = lane_area(t, lane[i]);
-	while (n < WIDE_LANES) {
-		int widest = -1;
-		for (i = 0; i < n; i++)
-			if (!t->nodes[lane[i]].count && (widest < 0 || area[i] > area[widest]))
-				widest = i;
-		if (widest < 0)
-			break;
-		lane[n] = t->nodes[lane[widest]].start + 1;
-		lane[widest] = t->nodes[lane[widest]].start;
-		area[n] = lane_area(t, lane[n]);
-		area[widest] = lane_area(t, lane[widest]);
-		n++;
-	}
-	wide_fill(t, w, lane, n);
-	return w;
-}
-
-static void wide_fill(bvh_tree *t, int w, const int *lane, int n)
-{
-	int i, axis;
-	for (i = 0; i < WIDE_LANES; i++) {
-		const bvh_node *c = i < n ? &t->nodes[lane[i]] : NULL;
-		for (axis = 0; axis < 3; axis++) {
-			t->wide[w].box[2 * axis][i] = c ? (float)bvh_bound(c, 0, axis) : INFINITY;
-			t->wide[w].box[2 * axis + 1][i] = c ? (float)bvh_bound(c, 1, axis) : -INFINITY;
-		}
-		/* A leaf of one object (most leaves) names the object itself: the search
-		 * then skips a load from the index. */
-		t->wide[w].count[i] = !c ? 0 : c->count == 1 ? WIDE_ONE_OBJECT : c->count;
-		t->wide[w].child[i] = !c	      ? -1
-				      : c->count == 1 ? t->index[c->start]
-				      : c->count      ? c->start
-						      : wide_collapse(t, lane[i]);
-	}
 }
 #endif
 
@@ -506,21 +539,23 @@ void bvh_build(bvh_tree *t, const scene *s)
 		for (i = boxes - 1; i >= 0; i--)
 			items[t->unbounded_count + i] = items[i];
 	pages_prepare(t->index, (size_t)(t->unbounded_count + boxes) * sizeof t->index[0]);
-	/* A tree of n boxes has at most 2n - 1 nodes. */
-	pages_plan(t->nodes, 2 * (size_t)boxes * sizeof t->nodes[0]);
-	pages_ahead(t->nodes, sizeof t->nodes[0], 0, 1, 2 * RT_MAX_OBJECTS); /* the root */
 	t->node_count = 1;
 	{
 		item_bounds all = bounds_of(t->unbounded_count, boxes);
+#if BVH_WIDE
+		wide_lane root;
+		/* At most n L / (2 (L - 1)) wide nodes for n boxes (bvh.h). */
+		pages_plan(t->wide, ((size_t)boxes / 2 + (size_t)boxes / (2 * (WIDE_LANES - 1)) + 1) *
+					    sizeof t->wide[0]);
+		lane_make(t, &root, t->unbounded_count, boxes, &all, 0);
+		(void)wide_build(t, &root);
+#else
+		/* A tree of n boxes has at most 2n - 1 nodes. */
+		pages_plan(t->nodes, 2 * (size_t)boxes * sizeof t->nodes[0]);
+		pages_ahead(t->nodes, sizeof t->nodes[0], 0, 1, 2 * RT_MAX_OBJECTS); /* the root */
 		build_node(t, 0, t->unbounded_count, boxes, &all, 0);
+#endif
 	}
 	for (i = t->unbounded_count; i < t->unbounded_count + boxes; i++)
 		t->index[i] = items[i].object;
-#if BVH_WIDE
-	/* No more wide nodes than the binary tree has inner ones. */
-	pages_plan(t->wide, ((size_t)t->node_count / 2 + 1) * sizeof t->wide[0]);
-	t->wide_count = 0;
-	(void)wide_collapse(t, 0);
-#endif
 }
-

@@ -15,12 +15,8 @@ static TRAVERSE_TARGET TRAVERSE_INLINE real TRAVERSE(const scene *s, const bvh_t
 						     const ray *r, int skip, real tmax, hit *h,
 						     int shadow, int *found)
 {
-	struct {
-		int node;
-		real enter;
-	} stack[STACK_SIZE];
-	int top = 0, i;
-	real pass = REAL_C(1.0), enter, enter0, enter1;
+	int top, i;
+	real pass = REAL_C(1.0), enter;
 	crossing crossed; /* the transmitting objects a shadow ray crosses */
 	slab_ray sr;
 #if BVH_WIDE
@@ -190,38 +186,78 @@ static TRAVERSE_TARGET TRAVERSE_INLINE real TRAVERSE(const scene *s, const bvh_t
 	sr.divided = REAL_SATURATES && !(real_fabs(sr.inv.x) < RECIPROCAL_LIMIT &&
 					 real_fabs(sr.inv.y) < RECIPROCAL_LIMIT &&
 					 real_fabs(sr.inv.z) < RECIPROCAL_LIMIT);
-	if (t->node_count && box_hit(&t->nodes[0], &sr, tmax, &enter)) {
-		stack[0].node = 0;
-		stack[0].enter = enter;
+#if BVH_WIDE
+	if (t->node_count) {
+		/* A ray beyond the float test's reach (wide_ray_make: an origin beyond 2^100,
+		 * a direction component below 2^-100 other than 0): the same wide tree, each
+		 * lane's box tested in reals as box_hit tests any box, and the lanes entered
+		 * searched as they come. */
+		int wide_stack[(WIDE_LANES - 1) * (BVH_MAX_DEPTH + 1) + 2], lane;
+		float limit = 0.0f; /* VISIT_LEAF narrows it; no float test reads it here */
+		wide_stack[0] = 0; /* the root */
 		top = 1;
+		while (top > 0) {
+			const bvh_wide_node *node = &t->wide[wide_stack[--top]];
+			for (lane = 0; lane < WIDE_LANES && node->child[lane] >= 0; lane++) {
+				bvh_point box[2];
+				box[0].x = node->box[0][lane];
+				box[1].x = node->box[1][lane];
+				box[0].y = node->box[2][lane];
+				box[1].y = node->box[3][lane];
+				box[0].z = node->box[4][lane];
+				box[1].z = node->box[5][lane];
+				if (!box_hit(box, &sr, tmax, &enter))
+					continue;
+				if (node->count[lane])
+					VISIT_LEAF(node->child[lane], node->count[lane]);
+				else
+					wide_stack[top++] = node->child[lane];
+			}
+		}
+		(void)limit;
 	}
-	while (top > 0) {
-		const bvh_node *n;
-		top--;
-		/* A nearer hit found since this node was pushed may make it pointless. */
-		if (!shadow && stack[top].enter > (REAL_SATURATES ? tmax : tmax * BOX_SLACK))
-			continue;
-		n = &t->nodes[stack[top].node];
-		if (n->count) {
-			for (i = 0; i < n->count; i++)
-				VISIT(t->index[n->start + i]);
-		} else {
-			/* Test both children here and push only those the ray enters, the
-			 * nearer one last so that it is searched first. */
-			int hit0 = box_hit(&t->nodes[n->start], &sr, tmax, &enter0);
-			int hit1 = box_hit(&t->nodes[n->start + 1], &sr, tmax, &enter1);
-			if (hit0 && hit1) {
-				int near = enter0 <= enter1 ? 0 : 1;
-				stack[top].node = n->start + !near;
-				stack[top++].enter = near ? enter0 : enter1;
-				stack[top].node = n->start + near;
-				stack[top++].enter = near ? enter1 : enter0;
-			} else if (hit0 || hit1) {
-				stack[top].node = n->start + (hit0 ? 0 : 1);
-				stack[top++].enter = hit0 ? enter0 : enter1;
+#else
+	{
+		struct {
+			int node;
+			real enter;
+		} stack[STACK_SIZE];
+		real enter0, enter1;
+		top = 0;
+		if (t->node_count && box_hit(t->nodes[0].bounds, &sr, tmax, &enter)) {
+			stack[0].node = 0;
+			stack[0].enter = enter;
+			top = 1;
+		}
+		while (top > 0) {
+			const bvh_node *n;
+			top--;
+			/* A nearer hit found since this node was pushed may make it pointless. */
+			if (!shadow && stack[top].enter > (REAL_SATURATES ? tmax : tmax * BOX_SLACK))
+				continue;
+			n = &t->nodes[stack[top].node];
+			if (n->count) {
+				for (i = 0; i < n->count; i++)
+					VISIT(t->index[n->start + i]);
+			} else {
+				/* Test both children here and push only those the ray enters, the
+				 * nearer one last so that it is searched first. */
+				int hit0 = box_hit(t->nodes[n->start].bounds, &sr, tmax, &enter0);
+				int hit1 = box_hit(t->nodes[n->start + 1].bounds, &sr, tmax, &enter1);
+				if (hit0 && hit1) {
+					int near = enter0 <= enter1 ? 0 : 1;
+					stack[top].node = n->start + !near;
+					stack[top++].enter = near ? enter0 : enter1;
+					stack[top].node = n->start + near;
+					stack[top++].enter = near ? enter1 : enter0;
+				} else if (hit0 || hit1) {
+					stack[top].node = n->start + (hit0 ? 0 : 1);
+					stack[top++].enter = hit0 ? enter0 : enter1;
+				}
 			}
 		}
 	}
+#endif
 #undef VISIT
 #undef VISIT_LEAF
 #undef VISIT_NEAREST

@@ -16,14 +16,35 @@ static int boxes_meet(const bvh_point *alo, const bvh_point *ahi, const bvh_poin
 	       alo->z <= bhi->z && blo->z <= ahi->z;
 }
 
+/* Adds object o, of a leaf whose box is [lo, hi], to list l of `solid`'s overlaps unless
+ * it is the solid, already listed (a long cone's pieces are in several leaves), or of one
+ * piece and with a box that does not meet [reach_lo, reach_hi] (a cone's piece is known
+ * by its leaf's box alone, which holds it). Returns 0 when the list is full. */
+static int list_object(inside_list *l, const scene *s, int solid, int o,
+		       const bvh_point *reach_lo, const bvh_point *reach_hi)
+{
+	bvh_point lo, hi;
+	int k;
+	for (k = 0; k < l->count && l->objects[k] != o; k++)
+		;
+	if (o == solid || k < l->count)
+		return 1;
+	if (bvh_object_pieces(s, o) == 1 && bvh_object_box(s, o, &lo, &hi) &&
+	    !boxes_meet(&lo, &hi, reach_lo, reach_hi))
+		return 1;
+	if (l->count == INSIDE_MAX)
+		return 0;
+	l->objects[l->count++] = o;
+	return 1;
+}
+
 /* Lists in l the objects other than `solid` whose boxes in the tree meet l's box grown by
- * its padding: through
- * the binary tree, each leaf's objects by their own boxes (a long cone cut in pieces,
- * bvh_pieces.c, by the leaf's box, which holds its piece's). Returns 0 when they are more
- * than INSIDE_MAX. */
+ * its padding: through the wide tree, each leaf lane's objects by their own boxes (a long
+ * cone cut in pieces, bvh_pieces.c, by the lane's box, which holds its piece's). Returns
+ * 0 when they are more than INSIDE_MAX. */
 static int list_overlaps(inside_list *l, const scene *s, const bvh_tree *t, int solid)
 {
-	int stack[BVH_MAX_DEPTH + 2], top = 1;
+	int stack[(WIDE_LANES - 1) * (BVH_MAX_DEPTH + 1) + 2], top = 1;
 	bvh_point reach_lo, reach_hi;
 	{
 		vec3 lo = bvh_point_vec(l->lo), hi = bvh_point_vec(l->hi);
@@ -33,31 +54,33 @@ static int list_overlaps(inside_list *l, const scene *s, const bvh_tree *t, int 
 		reach_hi = bvh_round_corner(vec_add(hi, grow), 1);
 	}
 	l->count = 0;
-	stack[0] = 0;
+	stack[0] = 0; /* the root */
 	while (top > 0) {
-		const bvh_node *n = &t->nodes[stack[--top]];
-		int i, k;
-		if (!boxes_meet(&n->bounds[0], &n->bounds[1], &reach_lo, &reach_hi))
-			continue;
-		if (!n->count) {
-			stack[top++] = n->start;
-			stack[top++] = n->start + 1;
-			continue;
-		}
-		for (i = n->start; i < n->start + n->count; i++) {
-			int o = t->index[i];
+		const bvh_wide_node *w = &t->wide[stack[--top]];
+		int lane, i;
+		for (lane = 0; lane < WIDE_LANES && w->child[lane] >= 0; lane++) {
+			int child = w->child[lane], count = w->count[lane];
 			bvh_point lo, hi;
-			/* A long cone's pieces are in several leaves: listed once. */
-			for (k = 0; k < l->count && l->objects[k] != o; k++)
-				;
-			if (o == solid || k < l->count)
+			lo.x = w->box[0][lane];
+			hi.x = w->box[1][lane];
+			lo.y = w->box[2][lane];
+			hi.y = w->box[3][lane];
+			lo.z = w->box[4][lane];
+			hi.z = w->box[5][lane];
+			if (!boxes_meet(&lo, &hi, &reach_lo, &reach_hi))
 				continue;
-			if (bvh_object_pieces(s, o) == 1 && bvh_object_box(s, o, &lo, &hi) &&
-			    !boxes_meet(&lo, &hi, &reach_lo, &reach_hi))
+			if (!count) {
+				stack[top++] = child;
 				continue;
-			if (l->count == INSIDE_MAX)
-				return 0;
-			l->objects[l->count++] = o;
+			}
+			if (count == WIDE_ONE_OBJECT) {
+				if (!list_object(l, s, solid, child, &reach_lo, &reach_hi))
+					return 0;
+				continue;
+			}
+			for (i = child; i < child + count; i++)
+				if (!list_object(l, s, solid, t->index[i], &reach_lo, &reach_hi))
+					return 0;
 		}
 	}
 	return 1;
