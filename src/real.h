@@ -36,6 +36,7 @@ typedef float real;
 #define REAL_NAME "float"
 #define REAL_C(x) ((float)(x))
 #define REAL_MAX FLT_MAX
+#define REAL_MIN FLT_MIN /* the least normal number */
 #define REAL_EPSILON FLT_EPSILON /* 2^-23: the gap between 1 and the next value */
 #define real_sqrt sqrtf
 #define real_fabs fabsf
@@ -51,6 +52,7 @@ typedef double real;
 #define REAL_NAME "double"
 #define REAL_C(x) ((double)(x))
 #define REAL_MAX DBL_MAX
+#define REAL_MIN DBL_MIN /* the least normal number */
 #define REAL_EPSILON DBL_EPSILON
 #define real_sqrt sqrt
 #define real_fabs fabs
@@ -65,6 +67,7 @@ typedef long double real;
 #define REAL_NAME "long double"
 #define REAL_C(x) ((long double)(x))
 #define REAL_MAX LDBL_MAX
+#define REAL_MIN LDBL_MIN /* the least normal number */
 #define REAL_EPSILON LDBL_EPSILON
 #define real_sqrt sqrtl
 #define real_fabs fabsl

@@ -628,8 +628,10 @@ if command -v script >/dev/null 2>&1 && script -qec true /dev/null >/dev/null 2>
 			bad "the preview on a terminal with $env: escape sequences, or no preview"
 		fi
 	done
+	# (3 s: the bar shows once a row ends, from half a second on, and a row under the
+	# sanitizers on a busy machine took over 1.5 s.)
 	for term in xterm dumb; do
-		TERM=$term script -qec "'$RT' -d 8 -s 256x256 --time-limit 1.5 -o '$tmp/bar.ppm' '$tmp/slow.nff'" \
+		TERM=$term script -qec "'$RT' -d 8 -s 256x256 --time-limit 3 -o '$tmp/bar.ppm' '$tmp/slow.nff'" \
 			/dev/null >"$tmp/tty" 2>&1
 		if [ $term = dumb ]; then
 			if grep -q "$esc" "$tmp/tty"; then bad "TERM=dumb: the progress bar's escapes"; else ok; fi

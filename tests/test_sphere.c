@@ -436,6 +436,124 @@ static void test_coarse_miss(void)
 }
 #endif
 
+#if !REAL_FIXED
+/* A shadow ray's answer (no hit record) is the hit-record form's, bit for bit, where the
+ * test settles a crossing without its roots (sphere.c, crossing_certain): rays from
+ * outside aimed across spheres of many sizes and places, through their middles and within
+ * a hair of their silhouettes, rays from inside, and tangents (where the near root is
+ * c / |b| itself and the margin is all that keeps the answer), each asked with tmax just
+ * below, at and just above the hit and far past it. */
+static void test_shadow_crossings(void)
+{
+	/* tmax: these multiples of the hit's t, then t plus these many epsilon of it. */
+	static const double times[] = {0.5, 1.0 - 1e-3, 1.0 + 1e-3, 3.0};
+	static const double epsilons[] = {-64.0, -8.0, -2.0, -1.0, 0.0, 1.0, 2.0, 8.0, 64.0};
+	const int multiples = (int)(sizeof times / sizeof times[0]);
+	const int tries = multiples + (int)(sizeof epsilons / sizeof epsilons[0]);
+	int i, k, asked = 0, hits = 0, exits = 0, tangents = 0, differ = 0;
+	test_seed(31);
+	for (i = 0; i < 40000; i++) {
+		double scale = pow(10.0, test_random_range(-3.0, 5.0));
+		double radius = scale * test_random_range(0.01, 1.0);
+		/* Half the rays through the sphere, half at its rim, a relative hair inside. */
+		double off = i % 2 ? test_random_range(0.0, 0.9)
+				   : 1.0 - pow(10.0, test_random_range(-15.0, -3.0));
+		vec3 centre = vec_make(test_real(scale * test_random_range(-5.0, 5.0)),
+				       test_real(scale * test_random_range(-5.0, 5.0)),
+				       test_real(scale * test_random_range(-5.0, 5.0)));
+		vec3 from = vec_make(test_real(scale * test_random_range(-20.0, 20.0)),
+				     test_real(scale * test_random_range(-20.0, 20.0)),
+				     test_real(scale * 25.0));
+		vec3 side = vec_make(test_real(test_random_range(-1.0, 1.0)),
+				     test_real(test_random_range(-1.0, 1.0)), REAL_C(0.0));
+		object o = make_sphere(centre, test_real(radius), OBJ_TWO_SIDED);
+		hit h, unused;
+		ray r;
+		if (!(vec_length(side) > REAL_C(0.0)))
+			continue;
+		side = vec_scale(side, test_real(radius * off) / vec_length(side));
+		r = test_ray(from, vec_sub(vec_add(centre, side), from));
+		if (!sphere_intersect(&o, &r, REAL_C(0.0), REAL_MAX, &h))
+			continue;
+		hits++;
+		for (k = 0; k < tries; k++) {
+			double t = test_double(h.t);
+			real tmax = test_real(k < multiples ? t * times[k]
+							    : t + t * epsilons[k - multiples] *
+									  (double)REAL_EPSILON);
+			asked++;
+			differ += sphere_intersect(&o, &r, REAL_C(0.0), tmax, NULL) !=
+				  sphere_intersect(&o, &r, REAL_C(0.0), tmax, &unused);
+		}
+	}
+	/* Tangents, whose discriminant is exactly 0: where the near root c / |b| rounds
+	 * apart from c and |b|'s own ratio, only the margin keeps the shortcut's answer. A
+	 * sphere about the origin, a ray along z at x = r (so that v = (r, 0, 0) and |v|^2 is
+	 * r^2 as the sphere keeps it), tmax within an epsilon or two of its hit. */
+	for (i = 0; i < 100000; i++) {
+		real radius = test_real(pow(10.0, test_random_range(-3.0, 4.0)));
+		real z = -radius * test_real(test_random_range(1.5, 100.0));
+		object o = make_sphere(vec_make(REAL_C(0.0), REAL_C(0.0), REAL_C(0.0)), radius,
+				       OBJ_TWO_SIDED);
+		ray r;
+		hit h, unused;
+		r.origin = vec_make(radius, REAL_C(0.0), z);
+		r.dir = dir_make(UNIT_C(0.0), UNIT_C(0.0), UNIT_C(1.0));
+		if (!sphere_intersect(&o, &r, REAL_C(0.0), REAL_MAX, &h))
+			continue;
+		tangents++;
+		for (k = -2; k <= 2; k++) {
+			real tmax = h.t + h.t * (real)k * REAL_EPSILON;
+			asked++;
+			differ += sphere_intersect(&o, &r, REAL_C(0.0), tmax, NULL) !=
+				  sphere_intersect(&o, &r, REAL_C(0.0), tmax, &unused);
+		}
+	}
+	/* From inside, towards the wall and away from the centre alike, from anywhere in the
+	 * ball to a hair from its wall: the exit, tmax either side of it. */
+	for (i = 0; i < 40000; i++) {
+		double scale = pow(10.0, test_random_range(-3.0, 5.0));
+		real radius = test_real(scale * test_random_range(0.01, 1.0));
+		double depth = i % 2 ? test_random_range(0.0, 0.99)
+				     : 1.0 - pow(10.0, test_random_range(-15.0, -3.0));
+		vec3 centre = vec_make(test_real(scale * test_random_range(-5.0, 5.0)),
+				       test_real(scale * test_random_range(-5.0, 5.0)),
+				       test_real(scale * test_random_range(-5.0, 5.0)));
+		vec3 out = vec_make(test_real(test_random_range(-1.0, 1.0)),
+				    test_real(test_random_range(-1.0, 1.0)),
+				    test_real(test_random_range(-1.0, 1.0)));
+		object o = make_sphere(centre, radius, OBJ_TWO_SIDED);
+		hit h, unused;
+		ray r;
+		if (!(vec_length(out) > REAL_C(0.0)))
+			continue;
+		r.origin = vec_add(centre, vec_scale(out, radius * test_real(depth) / vec_length(out)));
+		/* A quarter through the centre (the exit |r| + |b|: the bound's own size). */
+		r = test_ray(r.origin, i % 4 == 1 ? vec_sub(centre, r.origin)
+						  : vec_make(test_real(test_random_range(-1.0, 1.0)),
+							     test_real(test_random_range(-1.0, 1.0)),
+							     test_real(test_random_range(-1.0, 1.0))));
+		if (!sphere_intersect(&o, &r, REAL_C(0.0), REAL_MAX, &h))
+			continue;
+		exits++;
+		for (k = 0; k < tries; k++) {
+			double t = test_double(h.t);
+			real tmax = test_real(k < multiples ? t * times[k]
+							    : t + t * epsilons[k - multiples] *
+									  (double)REAL_EPSILON);
+			asked++;
+			differ += sphere_intersect(&o, &r, REAL_C(0.0), tmax, NULL) !=
+				  sphere_intersect(&o, &r, REAL_C(0.0), tmax, &unused);
+		}
+	}
+	CHECK(hits > 30000);
+	CHECK(exits > 30000);
+	CHECK(tangents > 50000);
+	CHECK(asked > 1000000);
+	CHECK_INT(differ, 0);
+}
+#endif
+
 void suite_sphere(void)
 {
 	size_t i;
@@ -446,5 +564,7 @@ void suite_sphere(void)
 	test_range_refusals();
 #if REAL_FIXED
 	test_coarse_miss();
+#else
+	test_shadow_crossings();
 #endif
 }
