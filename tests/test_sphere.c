@@ -437,6 +437,28 @@ static void test_coarse_miss(void)
 #endif
 
 #if !REAL_FIXED
+/* How many of thirteen tmax about a hit at t (half and three times t, a thousandth
+ * either side, and within 64 epsilon of it) get another answer from o without a hit
+ * record than with one; *asked counts them. */
+static int answers_differ(const object *o, const ray *r, real t, int *asked)
+{
+	static const double times[] = {0.5, 1.0 - 1e-3, 1.0 + 1e-3, 3.0};
+	static const double epsilons[] = {-64.0, -8.0, -2.0, -1.0, 0.0, 1.0, 2.0, 8.0, 64.0};
+	const int multiples = (int)(sizeof times / sizeof times[0]);
+	const int tries = multiples + (int)(sizeof epsilons / sizeof epsilons[0]);
+	int k, differ = 0;
+	hit unused;
+	for (k = 0; k < tries; k++) {
+		double at = test_double(t);
+		real tmax = test_real(k < multiples ? at * times[k]
+						    : at + at * epsilons[k - multiples] * (double)REAL_EPSILON);
+		(*asked)++;
+		differ += sphere_intersect(o, r, REAL_C(0.0), tmax, NULL) !=
+			  sphere_intersect(o, r, REAL_C(0.0), tmax, &unused);
+	}
+	return differ;
+}
+
 /* A shadow ray's answer (no hit record) is the hit-record form's, bit for bit, where the
  * test settles a crossing without its roots (sphere.c, crossing_certain): rays from
  * outside aimed across spheres of many sizes and places, through their middles and within
@@ -445,11 +467,6 @@ static void test_coarse_miss(void)
  * below, at and just above the hit and far past it. */
 static void test_shadow_crossings(void)
 {
-	/* tmax: these multiples of the hit's t, then t plus these many epsilon of it. */
-	static const double times[] = {0.5, 1.0 - 1e-3, 1.0 + 1e-3, 3.0};
-	static const double epsilons[] = {-64.0, -8.0, -2.0, -1.0, 0.0, 1.0, 2.0, 8.0, 64.0};
-	const int multiples = (int)(sizeof times / sizeof times[0]);
-	const int tries = multiples + (int)(sizeof epsilons / sizeof epsilons[0]);
 	int i, k, asked = 0, hits = 0, exits = 0, tangents = 0, differ = 0;
 	test_seed(31);
 	for (i = 0; i < 40000; i++) {
@@ -467,7 +484,7 @@ static void test_shadow_crossings(void)
 		vec3 side = vec_make(test_real(test_random_range(-1.0, 1.0)),
 				     test_real(test_random_range(-1.0, 1.0)), REAL_C(0.0));
 		object o = make_sphere(centre, test_real(radius), OBJ_TWO_SIDED);
-		hit h, unused;
+		hit h;
 		ray r;
 		if (!(vec_length(side) > REAL_C(0.0)))
 			continue;
@@ -476,15 +493,7 @@ static void test_shadow_crossings(void)
 		if (!sphere_intersect(&o, &r, REAL_C(0.0), REAL_MAX, &h))
 			continue;
 		hits++;
-		for (k = 0; k < tries; k++) {
-			double t = test_double(h.t);
-			real tmax = test_real(k < multiples ? t * times[k]
-							    : t + t * epsilons[k - multiples] *
-									  (double)REAL_EPSILON);
-			asked++;
-			differ += sphere_intersect(&o, &r, REAL_C(0.0), tmax, NULL) !=
-				  sphere_intersect(&o, &r, REAL_C(0.0), tmax, &unused);
-		}
+		differ += answers_differ(&o, &r, h.t, &asked);
 	}
 	/* Tangents, whose discriminant is exactly 0: where the near root c / |b| rounds
 	 * apart from c and |b|'s own ratio, only the margin keeps the shortcut's answer. A
@@ -523,7 +532,7 @@ static void test_shadow_crossings(void)
 				    test_real(test_random_range(-1.0, 1.0)),
 				    test_real(test_random_range(-1.0, 1.0)));
 		object o = make_sphere(centre, radius, OBJ_TWO_SIDED);
-		hit h, unused;
+		hit h;
 		ray r;
 		if (!(vec_length(out) > REAL_C(0.0)))
 			continue;
@@ -536,15 +545,7 @@ static void test_shadow_crossings(void)
 		if (!sphere_intersect(&o, &r, REAL_C(0.0), REAL_MAX, &h))
 			continue;
 		exits++;
-		for (k = 0; k < tries; k++) {
-			double t = test_double(h.t);
-			real tmax = test_real(k < multiples ? t * times[k]
-							    : t + t * epsilons[k - multiples] *
-									  (double)REAL_EPSILON);
-			asked++;
-			differ += sphere_intersect(&o, &r, REAL_C(0.0), tmax, NULL) !=
-				  sphere_intersect(&o, &r, REAL_C(0.0), tmax, &unused);
-		}
+		differ += answers_differ(&o, &r, h.t, &asked);
 	}
 	CHECK(hits > 30000);
 	CHECK(exits > 30000);
