@@ -437,24 +437,35 @@ static void test_coarse_miss(void)
 #endif
 
 #if !REAL_FIXED
-/* How many of thirteen tmax about a hit at t (half and three times t, a thousandth
- * either side, and within 64 epsilon of it) get another answer from o without a hit
- * record than with one; *asked counts them. */
+/* How many of fourteen tmax about a hit at t (half and three times t, a thousandth
+ * either side, within 64 epsilon of it, and the largest), each with tmin 0, -t, t / 2 and
+ * 2.5 t (past the far side of the spheres asked), get another
+ * answer from o without a hit record than with one, o as it is and showing only its
+ * inside (NFF's negative radius); *asked counts them. */
 static int answers_differ(const object *o, const ray *r, real t, int *asked)
 {
 	static const double times[] = {0.5, 1.0 - 1e-3, 1.0 + 1e-3, 3.0};
 	static const double epsilons[] = {-64.0, -8.0, -2.0, -1.0, 0.0, 1.0, 2.0, 8.0, 64.0};
 	const int multiples = (int)(sizeof times / sizeof times[0]);
-	const int tries = multiples + (int)(sizeof epsilons / sizeof epsilons[0]);
-	int k, differ = 0;
+	const int tries = multiples + (int)(sizeof epsilons / sizeof epsilons[0]) + 1;
+	const real tmins[] = {REAL_C(0.0), -t, t * REAL_C(0.5), t * REAL_C(2.5)};
+	int k, m, inside_only, differ = 0;
+	object shown = *o;
 	hit unused;
-	for (k = 0; k < tries; k++) {
-		double at = test_double(t);
-		real tmax = test_real(k < multiples ? at * times[k]
-						    : at + at * epsilons[k - multiples] * (double)REAL_EPSILON);
-		(*asked)++;
-		differ += sphere_intersect(o, r, REAL_C(0.0), tmax, NULL) !=
-			  sphere_intersect(o, r, REAL_C(0.0), tmax, &unused);
+	for (inside_only = 0; inside_only < 2; inside_only++) {
+		shown.flags = (unsigned char)(o->flags | (inside_only ? OBJ_INSIDE_ONLY : 0u));
+		for (k = 0; k < tries; k++) {
+			double at = test_double(t);
+			real tmax = k == tries - 1 ? REAL_MAX
+				    : test_real(k < multiples ? at * times[k]
+							      : at + at * epsilons[k - multiples] *
+									    (double)REAL_EPSILON);
+			for (m = 0; m < (int)(sizeof tmins / sizeof tmins[0]); m++) {
+				(*asked)++;
+				differ += sphere_intersect(&shown, r, tmins[m], tmax, NULL) !=
+					  sphere_intersect(&shown, r, tmins[m], tmax, &unused);
+			}
+		}
 	}
 	return differ;
 }
@@ -467,7 +478,7 @@ static int answers_differ(const object *o, const ray *r, real t, int *asked)
  * below, at and just above the hit and far past it. */
 static void test_shadow_crossings(void)
 {
-	int i, k, asked = 0, hits = 0, exits = 0, tangents = 0, differ = 0;
+	int i, k, asked = 0, hits = 0, exits = 0, tangents = 0, huge = 0, differ = 0;
 	test_seed(31);
 	for (i = 0; i < 40000; i++) {
 		double scale = pow(10.0, test_random_range(-3.0, 5.0));
@@ -494,6 +505,32 @@ static void test_shadow_crossings(void)
 			continue;
 		hits++;
 		differ += answers_differ(&o, &r, h.t, &asked);
+	}
+	/* Spheres far too big for the shortcut's bound on |r| + |b| (up to the square root of
+	 * the type's range, where r^2 overflows; long double's to double's), rays from outside
+	 * through them. */
+	for (i = 0; i < 4000; i++) {
+		double range = (double)REAL_MAX < 1e300 ? log10((double)REAL_MAX) : 300.0;
+		/* Half of them about where r^2 overflows. */
+		double scale = pow(10.0, test_random_range(i % 2 ? 5.0 : range / 2.0 - 1.0,
+							   range / 2.0 + 1.0));
+		real radius = test_real(scale * test_random_range(0.5, 1.0));
+		object o = make_sphere(vec_make(REAL_C(0.0), REAL_C(0.0), REAL_C(0.0)), radius,
+				       OBJ_TWO_SIDED);
+		/* From outside along z, or from near the centre (where |f|^2 stays finite while
+		 * r^2 overflows) anywhere. */
+		double near = i % 4 < 2 ? 0.4 : 0.1;
+		ray r = test_ray(vec_make(test_real(scale * test_random_range(-near, near)),
+					  test_real(scale * test_random_range(-near, near)),
+					  test_real(i % 4 < 2 ? -scale * 3.0
+							      : scale * test_random_range(-near, near))),
+				 vec_make(test_real(test_random_range(-0.1, 0.1)),
+					  test_real(test_random_range(-0.1, 0.1)),
+					  test_real(i % 4 < 2 ? 1.0 : test_random_range(-1.0, 1.0))));
+		/* Asked about the wall's distance whether or not the careful test finds it (r^2
+		 * may overflow). */
+		huge++;
+		differ += answers_differ(&o, &r, test_real(scale * 2.0), &asked);
 	}
 	/* Tangents, whose discriminant is exactly 0: where the near root c / |b| rounds
 	 * apart from c and |b|'s own ratio, only the margin keeps the shortcut's answer. A
@@ -550,7 +587,8 @@ static void test_shadow_crossings(void)
 	CHECK(hits > 30000);
 	CHECK(exits > 30000);
 	CHECK(tangents > 50000);
-	CHECK(asked > 1000000);
+	CHECK(huge > 2000);
+	CHECK(asked > 3000000);
 	CHECK_INT(differ, 0);
 }
 #endif
