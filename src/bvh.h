@@ -102,6 +102,17 @@ typedef struct {
 				* (child -1) */
 } bvh_wide_node;
 
+/* The box of lane `lane` of wide node w: its lower corner in box[0], upper in box[1]. */
+static inline void bvh_lane_box(const bvh_wide_node *w, int lane, bvh_point box[2])
+{
+	box[0].x = w->box[0][lane];
+	box[1].x = w->box[1][lane];
+	box[0].y = w->box[2][lane];
+	box[1].y = w->box[3][lane];
+	box[0].z = w->box[4][lane];
+	box[1].z = w->box[5][lane];
+}
+
 /* The count of a leaf lane of one object, whose child is the object's number. */
 #define WIDE_ONE_OBJECT (-1)
 

@@ -200,12 +200,7 @@ static TRAVERSE_TARGET TRAVERSE_INLINE real TRAVERSE(const scene *s, const bvh_t
 			const bvh_wide_node *node = &t->wide[wide_stack[--top]];
 			for (lane = 0; lane < WIDE_LANES && node->child[lane] >= 0; lane++) {
 				bvh_point box[2];
-				box[0].x = node->box[0][lane];
-				box[1].x = node->box[1][lane];
-				box[0].y = node->box[2][lane];
-				box[1].y = node->box[3][lane];
-				box[0].z = node->box[4][lane];
-				box[1].z = node->box[5][lane];
+				bvh_lane_box(node, lane, box);
 				if (!box_hit(box, &sr, tmax, &enter))
 					continue;
 				if (node->count[lane])

@@ -60,14 +60,9 @@ static int list_overlaps(inside_list *l, const scene *s, const bvh_tree *t, int 
 		int lane, i;
 		for (lane = 0; lane < WIDE_LANES && w->child[lane] >= 0; lane++) {
 			int child = w->child[lane], count = w->count[lane];
-			bvh_point lo, hi;
-			lo.x = w->box[0][lane];
-			hi.x = w->box[1][lane];
-			lo.y = w->box[2][lane];
-			hi.y = w->box[3][lane];
-			lo.z = w->box[4][lane];
-			hi.z = w->box[5][lane];
-			if (!boxes_meet(&lo, &hi, &reach_lo, &reach_hi))
+			bvh_point box[2];
+			bvh_lane_box(w, lane, box);
+			if (!boxes_meet(&box[0], &box[1], &reach_lo, &reach_hi))
 				continue;
 			if (!count) {
 				stack[top++] = child;
