@@ -1,0 +1,436 @@
+/* bvh_split.c - how the hierarchy's build parts a node's objects: the build's items (each
+ * bounded object's box, kept in the tree's order) and the split of a run of them by the
+ * surface area heuristic, binned, or sorted for small nodes; bvh_build.c makes the trees.
+ * See LICENSE for copyright and licence. */
+#include "bvh_split.h"
+
+#include "box.h"
+#include "pages.h"
+
+
+/* SAH candidate planes per axis, minus one: BINS for most nodes, FINE_BINS (floating
+ * types) for nodes of more than FINE_BINS_FROM objects. With 32 bins everywhere SPD
+ * teapot-s12's searches took 0.959 of the instructions (its triangles, all of a size,
+ * are parted better near the top of the tree; balls 0.994, the other SPD scenes within
+ * 0.3 %), but sweeping the extra bins of every small node made its build 7 ms -> 10 ms;
+ * above 256 objects the searches gain as much (0.959) and the build costs no more than a
+ * run can show. Fixed point keeps BINS, so its tree and its images stay as they were. */
+#define BINS 16
+#define FINE_BINS (BVH_WIDE ? 32 : BINS)
+#define FINE_BINS_FROM 256
+#define MAX_LEAF 4 /* a leaf holds at most this many objects when it can be split */
+
+/* Makes [lo, hi] the empty box, inside out. */
+static void points_empty(bvh_point *lo, bvh_point *hi)
+{
+#if BVH_WIDE
+	lo->x = lo->y = lo->z = FLT_MAX;
+	hi->x = hi->y = hi->z = -FLT_MAX;
+#else
+	box_empty(lo, hi);
+#endif
+}
+
+/* Grows [lo, hi] to hold the box [a, b] (a <= b), in the corners' own type. */
+static inline void points_grow(bvh_point *lo, bvh_point *hi, const bvh_point *a, const bvh_point *b)
+{
+	lo->x = a->x < lo->x ? a->x : lo->x;
+	lo->y = a->y < lo->y ? a->y : lo->y;
+	lo->z = a->z < lo->z ? a->z : lo->z;
+	hi->x = b->x > hi->x ? b->x : hi->x;
+	hi->y = b->y > hi->y ? b->y : hi->y;
+	hi->z = b->z > hi->z ? b->z : hi->z;
+}
+
+/* Build scratch: each bounded object's bounds, as the nodes keep them (float, rounded
+ * outwards, in floating types: a node's box is then the union of its objects' as they
+ * are), kept in the order of the tree's index (partitioned with it), so that every pass
+ * over a node's objects reads memory in order: reached through the index, the 1 M sphere
+ * build spent most of its 1.4 s waiting for memory, and much of the rest reading boxes
+ * of doubles. */
+typedef struct {
+	bvh_point lo, hi;
+	int object;
+} build_item;
+static build_item items[RT_MAX_OBJECTS];
+
+/* The items as bvh_build.c makes and reads them (bvh_split.h). */
+void bvh_items_prepare(int count)
+{
+	pages_prepare(items, (size_t)count * sizeof items[0]);
+}
+
+void bvh_items_ahead(int first, int count)
+{
+	pages_ahead(items, sizeof items[0], (size_t)first, (size_t)count, RT_MAX_OBJECTS);
+}
+
+void bvh_item_make(int at, int index, vec3 lo, vec3 hi, real pad)
+{
+	vec3 p = vec_make(pad, pad, pad);
+	items[at].lo = bvh_round_corner(vec_sub(lo, p), 0);
+	items[at].hi = bvh_round_corner(vec_add(hi, p), 1);
+	items[at].object = index;
+}
+
+void bvh_items_shift(int count, int by)
+{
+	int i;
+	for (i = count - 1; i >= 0; i--)
+		items[by + i] = items[i];
+}
+
+int bvh_item_object(int at)
+{
+	return items[at].object;
+}
+
+/* An item's centre, by which it is binned and sorted: in floating types the sum of its
+ * corners in float, twice the centre (float arithmetic, and no scaling: binning the
+ * 1 M sphere scene in double took most of its build); in fixed point the midpoint (the
+ * sum could overflow). A centre is a point of the corners' own type. */
+#if BVH_WIDE
+typedef float centre_coord;
+static inline bvh_point item_centre(const build_item *o)
+{
+	bvh_point c;
+	c.x = o->lo.x + o->hi.x;
+	c.y = o->lo.y + o->hi.y;
+	c.z = o->lo.z + o->hi.z;
+	return c;
+}
+#else
+typedef real centre_coord;
+static inline bvh_point item_centre(const build_item *o)
+{
+	return vec_scale(vec_add(o->lo, o->hi), REAL_C(0.5));
+}
+#endif
+
+/* A coordinate of a centre or a corner. */
+static inline centre_coord point_get(bvh_point c, int axis)
+{
+	return axis == 0 ? c.x : axis == 1 ? c.y : c.z;
+}
+
+/* The bounds of items[first .. first+count). */
+bvh_item_bounds bvh_items_bounds(int first, int count)
+{
+	bvh_item_bounds b;
+	int i;
+	points_empty(&b.lo, &b.hi);
+	points_empty(&b.clo, &b.chi);
+	for (i = 0; i < count; i++) {
+		const build_item *o = &items[first + i];
+		bvh_point centre = item_centre(o);
+		points_grow(&b.lo, &b.hi, &o->lo, &o->hi);
+		points_grow(&b.clo, &b.chi, &centre, &centre);
+	}
+	return b;
+}
+
+/* How one axis's centres fall into `count` bins: from the lowest centre `lo` over
+ * `extent`, by a product with `scale` = count / extent in floating types (the same
+ * product in the binning and in the partition, so both put an item in the same bin), by
+ * the quotient in fixed point (whose product rounds too coarsely). extent 0: one bin, not
+ * split. */
+typedef struct {
+	centre_coord lo, extent, scale;
+	int count;
+} axis_bins;
+
+static axis_bins axis_bins_make(bvh_point clo, bvh_point chi, int axis, int count)
+{
+	axis_bins a;
+	a.count = count;
+	a.lo = point_get(clo, axis);
+	a.extent = point_get(chi, axis) - a.lo;
+#if BVH_WIDE
+	a.scale = a.extent > 0.0f ? (float)count / a.extent : 0.0f;
+#else
+	a.scale = 0;
+#endif
+	return a;
+}
+
+/* The bin (0 .. a->count - 1) of centre c. The comparisons keep a NaN or out-of-range
+ * value (centres beyond float's range) from reaching the int conversion. */
+static inline int bin_at(const axis_bins *a, centre_coord c)
+{
+#if BVH_WIDE
+	float b = (c - a->lo) * a->scale;
+	return b >= 0.0f ? (b < (float)a->count ? (int)b : a->count - 1) : 0;
+#else
+	real b = real_mul(real_div(c - a->lo, a->extent), real_from_int(a->count));
+	return b >= REAL_C(0.0) ? (b < real_from_int(a->count) ? real_to_int(b) : a->count - 1)
+				: 0;
+#endif
+}
+
+/* Nodes of at most this many objects (most of a tree's nodes) are split by sorting their
+ * centres on each axis and pricing every plane between them: exact where binning is not,
+ * and with few objects far cheaper than sweeping BINS bins on three axes, which made
+ * nearly all of a small scene's build. Fixed point keeps its bins (no sorted split), so
+ * that its tree, and its images at the edge of its range, stay as they were. */
+#define SORTED_MAX 16
+
+/* The cost of a split, relative to a leaf's of one intersection per object: a traversal
+ * step plus each side's objects weighted by the chance that a ray entering the node
+ * enters that side (its area relative to the node's). */
+static real split_cost(real2 left_area, int left, real2 right_area, int right, real2 node_area)
+{
+	return REAL_C(0.5) + real_mul(real2_ratio(left_area, node_area), real_from_int(left)) +
+	       real_mul(real2_ratio(right_area, node_area), real_from_int(right));
+}
+
+/* Whether a node stays a leaf: no plane parts its objects, or the best costs no less than
+ * the leaf and the leaf is small enough. */
+static int leaf_is_better(int best_axis, real best_cost, int count)
+{
+	return best_axis < 0 || (best_cost >= real_from_int(count) && count <= MAX_LEAF);
+}
+
+#if BVH_WIDE
+/* sorted_split for two objects, without its sorts and sweeps: the same numbers compared
+ * in the same order, so the same split (the trees of the SPD scenes and of 60,000 random
+ * spheres hash the same). On each axis where their centres differ the one plane between
+ * them is priced, the object with the lower centre on the left; the two orders add the
+ * same two areas' terms in turn, which can round apart, so each is priced as its own.
+ * Nodes of two are a third of a million spheres' splits, which took 440 processor cycles
+ * each as sorted_split made them, mostly its loops' mispredicted exits. */
+static int pair_split(int first, const bvh_item_bounds *node, int *axis_out, bvh_item_bounds child[2])
+{
+	real2 node_area = box_half_area(bvh_point_vec(node->lo), bvh_point_vec(node->hi));
+	const build_item *a = &items[first], *b = &items[first + 1];
+	real2 area_a = box_half_area(bvh_point_vec(a->lo), bvh_point_vec(a->hi));
+	real2 area_b = box_half_area(bvh_point_vec(b->lo), bvh_point_vec(b->hi));
+	bvh_point centre_a = item_centre(a), centre_b = item_centre(b);
+	real cost[2], best_cost = REAL_MAX;
+	int best_axis = -1, b_first = 0, axis;
+	cost[0] = split_cost(area_a, 1, area_b, 1, node_area);
+	cost[1] = split_cost(area_b, 1, area_a, 1, node_area);
+	for (axis = 0; axis < 3; axis++) {
+		centre_coord ka = point_get(centre_a, axis), kb = point_get(centre_b, axis);
+		int swapped = kb < ka;
+		if (!(ka < kb) && !swapped)
+			continue; /* equal centres (or NaN): no plane */
+		if (cost[swapped] < best_cost) {
+			best_cost = cost[swapped];
+			best_axis = axis;
+			b_first = swapped;
+		}
+	}
+	if (leaf_is_better(best_axis, best_cost, 2))
+		return 0;
+	if (b_first) {
+		build_item swap = items[first];
+		items[first] = items[first + 1];
+		items[first + 1] = swap;
+	}
+	child[0] = bvh_items_bounds(first, 1);
+	child[1] = bvh_items_bounds(first + 1, 1);
+	*axis_out = best_axis;
+	return 1;
+}
+
+/* sah_split for a node of at most SORTED_MAX objects: the objects are sorted by centre
+ * on each axis, every plane between two different centres is priced, and the objects
+ * are put in the best axis's order with the first `left` going left. */
+static int sorted_split(int first, int count, const bvh_item_bounds *node, int *axis_out,
+			bvh_item_bounds child[2])
+{
+	real2 node_area = box_half_area(bvh_point_vec(node->lo), bvh_point_vec(node->hi));
+	int order[3][SORTED_MAX];
+	real best_cost = REAL_MAX;
+	int best_axis = -1, best_left = 0, axis, i, j;
+	build_item sorted[SORTED_MAX];
+	if (count < 2 || count > SORTED_MAX)
+		return 0; /* (never: sah_split sends only 2 .. SORTED_MAX) */
+	for (axis = 0; axis < 3; axis++) {
+		centre_coord key[SORTED_MAX] = {0}; /* (set before read; the lint cannot tell) */
+		real2 right_area[SORTED_MAX];
+		bvh_point run_lo, run_hi;
+		/* Insertion sort: stable, and at this size the quickest. */
+		for (i = 0; i < count; i++) {
+			centre_coord k = point_get(item_centre(&items[first + i]), axis);
+			for (j = i; j > 0 && key[j - 1] > k; j--) {
+				key[j] = key[j - 1];
+				order[axis][j] = order[axis][j - 1];
+			}
+			key[j] = k;
+			order[axis][j] = i;
+		}
+		points_empty(&run_lo, &run_hi);
+		for (i = count - 1; i > 0; i--) {
+			const build_item *o = &items[first + order[axis][i]];
+			points_grow(&run_lo, &run_hi, &o->lo, &o->hi);
+			right_area[i] = box_half_area(bvh_point_vec(run_lo), bvh_point_vec(run_hi));
+		}
+		points_empty(&run_lo, &run_hi);
+		for (i = 0; i < count - 1; i++) {
+			const build_item *o = &items[first + order[axis][i]];
+			real cost;
+			real2 left_area;
+			points_grow(&run_lo, &run_hi, &o->lo, &o->hi);
+			/* Equal centres stay together, as in a bin. */
+			if (!(key[i] < key[i + 1]))
+				continue;
+			left_area = box_half_area(bvh_point_vec(run_lo), bvh_point_vec(run_hi));
+			cost = split_cost(left_area, i + 1, right_area[i + 1], count - i - 1,
+					  node_area);
+			if (cost < best_cost) {
+				best_cost = cost;
+				best_axis = axis;
+				best_left = i + 1;
+			}
+		}
+	}
+	if (leaf_is_better(best_axis, best_cost, count))
+		return 0;
+	for (i = 0; i < count; i++)
+		sorted[i] = items[first + order[best_axis][i]];
+	for (i = 0; i < count; i++)
+		items[first + i] = sorted[i];
+	child[0] = bvh_items_bounds(first, best_left);
+	child[1] = bvh_items_bounds(first + best_left, count - best_left);
+	*axis_out = best_axis;
+	return best_left;
+}
+#endif
+
+/* Chooses the split of items[first .. first+count), whose bounds are `node`, with the
+ * lowest SAH cost over the bins of centres on each axis and partitions the objects by it.
+ * Returns the number moved to the left, or 0 when a leaf is cheaper and small enough, or
+ * when all centres coincide; child[0] and child[1] get the two sides' bounds (the bins'
+ * boxes and the centres met in the partition: no pass of their own). */
+static int sah_split(int first, int count, const bvh_item_bounds *node, int *axis_out,
+		     bvh_item_bounds child[2])
+{
+	real2 node_area = box_half_area(bvh_point_vec(node->lo), bvh_point_vec(node->hi));
+	real best_cost;
+	axis_bins bins[3];
+	int bin_count[3][FINE_BINS];
+	bvh_point bin_lo[3][FINE_BINS], bin_hi[3][FINE_BINS];
+	int best_axis = -1, best_plane = 0, axis, i, left;
+	int bins_used = count > FINE_BINS_FROM ? FINE_BINS : BINS;
+#if BVH_WIDE
+	if (count <= SORTED_MAX)
+		return count == 2 ? pair_split(first, node, axis_out, child)
+				  : sorted_split(first, count, node, axis_out, child);
+#endif
+	for (axis = 0; axis < 3; axis++) {
+		bins[axis] = axis_bins_make(node->clo, node->chi, axis, bins_used);
+		for (i = 0; i < bins_used; i++) {
+			bin_count[axis][i] = 0;
+			points_empty(&bin_lo[axis][i], &bin_hi[axis][i]);
+		}
+	}
+	/* One pass over the objects bins them on all three axes. */
+	for (i = 0; i < count; i++) {
+		const build_item *o = &items[first + i];
+		bvh_point centre = item_centre(o);
+		for (axis = 0; axis < 3; axis++) {
+			int b;
+			if (!(bins[axis].extent > 0))
+				continue;
+			b = bin_at(&bins[axis], point_get(centre, axis));
+			bin_count[axis][b]++;
+			points_grow(&bin_lo[axis][b], &bin_hi[axis][b], &o->lo, &o->hi);
+		}
+	}
+	best_cost = REAL_MAX;
+	for (axis = 0; axis < 3; axis++) {
+		bvh_point run_lo, run_hi;
+		real2 right_area[FINE_BINS];
+		int right_count[FINE_BINS], n;
+		if (!(bins[axis].extent > 0))
+			continue;
+		/* Sweep from the right, then from the left, pricing each plane between bins.
+		 * An empty bin's box is inside out (+MAX..-MAX) and must not be grown by. */
+		points_empty(&run_lo, &run_hi);
+		n = 0;
+		for (i = bins_used - 1; i > 0; i--) {
+			n += bin_count[axis][i];
+			if (bin_count[axis][i])
+				points_grow(&run_lo, &run_hi, &bin_lo[axis][i], &bin_hi[axis][i]);
+			/* Only the planes after a bin with objects are priced (below). */
+			right_area[i] = bin_count[axis][i - 1]
+					      ? box_half_area(bvh_point_vec(run_lo), bvh_point_vec(run_hi))
+					      : 0;
+			right_count[i] = n;
+		}
+		points_empty(&run_lo, &run_hi);
+		n = 0;
+		for (i = 0; i < bins_used - 1; i++) {
+			real cost;
+			n += bin_count[axis][i];
+			if (bin_count[axis][i])
+				points_grow(&run_lo, &run_hi, &bin_lo[axis][i], &bin_hi[axis][i]);
+			/* The plane after an empty bin parts the objects as the one before it
+			 * does, at the same cost, which cannot be lower: most planes of a small
+			 * node, where the pricing is most of the work. */
+			if (n == 0 || right_count[i + 1] == 0 || !bin_count[axis][i])
+				continue;
+			cost = split_cost(box_half_area(bvh_point_vec(run_lo), bvh_point_vec(run_hi)), n,
+					  right_area[i + 1], right_count[i + 1], node_area);
+			if (cost < best_cost) {
+				best_cost = cost;
+				best_axis = axis;
+				best_plane = i;
+			}
+		}
+	}
+	if (leaf_is_better(best_axis, best_cost, count))
+		return 0;
+	/* Each side's box is the union of its bins' boxes. */
+	for (i = 0; i < 2; i++) {
+		points_empty(&child[i].lo, &child[i].hi);
+		points_empty(&child[i].clo, &child[i].chi);
+	}
+	for (i = 0; i < bins_used; i++)
+		if (bin_count[best_axis][i])
+			points_grow(&child[i > best_plane].lo, &child[i > best_plane].hi,
+				    &bin_lo[best_axis][i], &bin_hi[best_axis][i]);
+	/* Partition: objects whose centre falls in bins 0..best_plane go left, in one pass
+	 * without a branch on the side (each item swapped with the first right one, which
+	 * stays where it is when the item is right too): which side an object falls on is a
+	 * coin toss the processor cannot predict, and a branch on it made this partition as
+	 * slow as the binning (a million spheres' build 0.94 s, now 0.83 s). */
+	{
+		int to = first;
+		for (i = first; i < first + count; i++) {
+			build_item item = items[i];
+			bvh_point centre = item_centre(&item);
+			int right = bin_at(&bins[best_axis], point_get(centre, best_axis)) > best_plane;
+			points_grow(&child[right].clo, &child[right].chi, &centre, &centre);
+			items[i] = items[to];
+			items[to] = item;
+			to += !right;
+		}
+		left = to - first;
+	}
+	*axis_out = best_axis;
+	return left > 0 && left < count ? left : 0;
+}
+
+/* How items[first .. first+count), whose bounds are `b`, a node at `depth` in the binary
+ * tree, are split: the number that go left (0: the node is a leaf), child[0] and child[1]
+ * their bounds, *axis the split's. Deeper than BVH_MAX_DEPTH a node is a leaf. */
+int bvh_node_split(int first, int count, const bvh_item_bounds *b, int depth, int *axis,
+		      bvh_item_bounds child[2])
+{
+	int left = 0;
+	*axis = 0;
+	if (count > 1 && depth < BVH_MAX_DEPTH) {
+		left = sah_split(first, count, b, axis, child);
+		/* Too many objects for one leaf but no plane between their centres (all
+		 * centres equal): split the list in half. */
+		if (!left && count > MAX_LEAF) {
+			left = count / 2;
+			*axis = 0;
+			child[0] = bvh_items_bounds(first, left);
+			child[1] = bvh_items_bounds(first + left, count - left);
+		}
+	}
+	return left;
+}
