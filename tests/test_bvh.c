@@ -811,17 +811,18 @@ static void test_inside_lists(void)
 #endif
 
 /* Spheres of `count` at random centres in a cube of side `size` around `centre`, radii
- * from 1/1000 to 1/10 of it (with one_centre, all at the centre itself). */
-static int sphere_scene(int count, double centre, double size, int one_centre)
+ * from 1/1000 to 1/10 of it; the last `fixed_axes` coordinates (z; y and z; all three) at
+ * the centre's own: on a plane, on a line, or all at one point. */
+static int sphere_scene(int count, double centre, double size, int fixed_axes)
 {
 	static char text[1 << 20];
 	int i, at = snprintf(text, sizeof text,
 			     "v\nfrom 0 0 -10\nat 0 0 0\nup 0 1 0\nangle 40\nhither 0.01\n"
 			     "resolution 8 8\nl 0 5 -5\nf 1 0 0 1 0 0 0 1\n");
 	for (i = 0; i < count && at > 0 && at < (int)sizeof text; i++) {
-		double x = one_centre ? 0.0 : test_random_range(-0.5, 0.5) * size;
-		double y = one_centre ? 0.0 : test_random_range(-0.5, 0.5) * size;
-		double z = one_centre ? 0.0 : test_random_range(-0.5, 0.5) * size;
+		double x = fixed_axes >= 3 ? 0.0 : test_random_range(-0.5, 0.5) * size;
+		double y = fixed_axes >= 2 ? 0.0 : test_random_range(-0.5, 0.5) * size;
+		double z = fixed_axes >= 1 ? 0.0 : test_random_range(-0.5, 0.5) * size;
 		at += snprintf(text + at, sizeof text - (size_t)at, "s %.17g %.17g %.17g %.17g\n",
 			       centre + x, centre + y, centre + z,
 			       size * test_random_range(0.001, 0.1));
@@ -831,7 +832,8 @@ static int sphere_scene(int count, double centre, double size, int one_centre)
 }
 
 /* The tree's shape for scenes that take each of the build's ways: nodes split by bins
- * and by sorting (a few objects, a few over the sorted limit, thousands), all centres in
+ * and by sorting (a few objects, a few over the sorted limit, thousands), centres on a
+ * plane or a line (axes of no extent, which the binning leaves alone), all centres in
  * one place (split in halves), centres far from the origin where float's steps are
  * coarse (Q16.16: the edge of its range). */
 static void test_tree_shape(void)
@@ -839,10 +841,11 @@ static void test_tree_shape(void)
 	static const struct {
 		int count;
 		double centre, size;
-		int one_centre;
+		int fixed_axes;
 	} cases[] = {{12, 0.0, 10.0, 0},	     {17, 0.0, 10.0, 0},   {33, 0.0, 10.0, 0},
-		     {3000, 0.0, 10.0, 0},   {40, 0.0, 10.0, 1},   {300, 0.0, 1e-3, 0},
-		     {300, 1e6, 1.0, 0},     {300, -2000.0, 100.0, 0}};
+		     {3000, 0.0, 10.0, 0},   {40, 0.0, 10.0, 3},   {300, 0.0, 1e-3, 0},
+		     {300, 1e6, 1.0, 0},     {300, -2000.0, 100.0, 0}, {2000, 0.0, 10.0, 1},
+		     {2000, 5.0, 10.0, 2}};
 	int c, leaves;
 	test_seed(19);
 	for (c = 0; c < (int)(sizeof cases / sizeof cases[0]); c++) {
@@ -850,7 +853,7 @@ static void test_tree_shape(void)
 		char what[64];
 		if (REAL_FIXED && (cases[c].centre > 30000.0 || cases[c].size < 0.01))
 			continue;
-		if (!sphere_scene(cases[c].count, cases[c].centre, cases[c].size, cases[c].one_centre))
+		if (!sphere_scene(cases[c].count, cases[c].centre, cases[c].size, cases[c].fixed_axes))
 			return;
 		tree = test_accel(&s, 1);
 		snprintf(what, sizeof what, "%d spheres at %g", cases[c].count, cases[c].centre);
