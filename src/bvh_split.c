@@ -4,13 +4,18 @@
  * See LICENSE for copyright and licence. */
 #include "bvh_split.h"
 
+#include <float.h>
+
 #include "box.h"
 #include "pages.h"
 
 /* x86 (SSE2, every x86-64): the binning and the partition take an item's corners four
- * floats at a time (binned_items, partition below); RT_NO_SIMD=1 and other targets take
- * the plain C loops, which give the same tree. */
-#if BVH_WIDE && defined(__SSE2__) && !RT_NO_SIMD
+ * floats at a time (bin_items, partition below); RT_NO_SIMD=1 and other targets take the
+ * plain C loops, which give the same tree. Only where float arithmetic is done in float
+ * (FLT_EVAL_METHOD 0): a 32-bit build computing in the x87's wider format would bin the
+ * plain way differently, and keeps that way throughout. */
+#if BVH_WIDE && defined(__SSE2__) && defined(FLT_EVAL_METHOD) && FLT_EVAL_METHOD == 0 && \
+	!RT_NO_SIMD
 #include <emmintrin.h>
 #include <stddef.h>
 #define BIN_SSE 1
