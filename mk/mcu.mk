@@ -9,7 +9,7 @@ MCU_TEST = $(if $(shell command -v $(MCU_CC)),mcu-ready)
 # own semihosting layer in src/mcu/), for a Cortex-M0 (qemu `microbit`, 16 KiB RAM) and
 # a Cortex-M3 (qemu `mps2-an385`, given the same 16 KiB). `make test-mcu` runs it under
 # qemu and compares its output with build/rt-fixed; docs/mcu.md has the budgets.
-MCU_HOST_ONLY = src/main.c src/output.c src/parallel.c src/workers.c src/antialias.c src/deflate.c src/term.c src/png.c src/stdio_io.c src/bvh.c src/bvh_build.c src/bvh_pieces.c src/bvh_split.c
+MCU_HOST_ONLY = src/main.c src/output.c src/parallel.c src/workers.c src/antialias.c src/deflate.c src/term.c src/png.c src/stdio_io.c src/bvh.c src/bvh_build.c src/bvh_pieces.c src/bvh_small_split.c src/bvh_split.c
 # The C library stand-ins are built apart, without link-time optimisation: the calls to
 # memcpy and memset the compiler itself emits must find them after it.
 MCU_LIBC = src/mcu/libc.c

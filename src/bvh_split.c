@@ -1,12 +1,11 @@
 /* bvh_split.c - how the hierarchy's build parts a node's objects: the build's items (each
  * bounded object's box, kept in the tree's order) and the split of a run of them by the
- * surface area heuristic, binned, or sorted for small nodes; bvh_build.c makes the trees.
+ * surface area heuristic by bins (small runs: bvh_small_split.c); bvh_build.c makes the
+ * trees.
  * See LICENSE for copyright and licence. */
 #include "bvh_split.h"
 
-#include <float.h>
-
-#include "box.h"
+#include "bvh_items.h"
 #include "pages.h"
 
 /* x86 (SSE2, every x86-64): the binning and the partition take an item's corners four
@@ -34,40 +33,8 @@
 #define BINS 16
 #define FINE_BINS (BVH_WIDE ? 32 : BINS)
 #define FINE_BINS_FROM 256
-#define MAX_LEAF 4 /* a leaf holds at most this many objects when it can be split */
 
-/* Makes [lo, hi] the empty box, inside out. */
-static void points_empty(bvh_point *lo, bvh_point *hi)
-{
-#if BVH_WIDE
-	lo->x = lo->y = lo->z = FLT_MAX;
-	hi->x = hi->y = hi->z = -FLT_MAX;
-#else
-	box_empty(lo, hi);
-#endif
-}
-
-/* Grows [lo, hi] to hold the box [a, b] (a <= b), in the corners' own type. */
-static inline void points_grow(bvh_point *lo, bvh_point *hi, const bvh_point *a, const bvh_point *b)
-{
-	lo->x = a->x < lo->x ? a->x : lo->x;
-	lo->y = a->y < lo->y ? a->y : lo->y;
-	lo->z = a->z < lo->z ? a->z : lo->z;
-	hi->x = b->x > hi->x ? b->x : hi->x;
-	hi->y = b->y > hi->y ? b->y : hi->y;
-	hi->z = b->z > hi->z ? b->z : hi->z;
-}
-
-/* Build scratch: each bounded object's bounds, as the nodes keep them (float, rounded
- * outwards, in floating types: a node's box is then the union of its objects' as they
- * are), kept in the order of the tree's index (partitioned with it), so that every pass
- * over a node's objects reads memory in order: reached through the index, the 1 M sphere
- * build spent most of its 1.4 s waiting for memory, and much of the rest reading boxes
- * of doubles. */
-typedef struct {
-	bvh_point lo, hi;
-	int object;
-} build_item;
+/* Build scratch (bvh_items.h). */
 static build_item items[RT_MAX_OBJECTS];
 
 /* The items as bvh_build.c makes and reads them (bvh_split.h). */
@@ -101,48 +68,11 @@ int bvh_item_object(int at)
 	return items[at].object;
 }
 
-/* An item's centre, by which it is binned and sorted: in floating types the sum of its
- * corners in float, twice the centre (float arithmetic, and no scaling: binning the
- * 1 M sphere scene in double took most of its build); in fixed point the midpoint (the
- * sum could overflow). A centre is a point of the corners' own type. */
-#if BVH_WIDE
-typedef float centre_coord;
-static inline bvh_point item_centre(const build_item *o)
-{
-	bvh_point c;
-	c.x = o->lo.x + o->hi.x;
-	c.y = o->lo.y + o->hi.y;
-	c.z = o->lo.z + o->hi.z;
-	return c;
-}
-#else
-typedef real centre_coord;
-static inline bvh_point item_centre(const build_item *o)
-{
-	return vec_scale(vec_add(o->lo, o->hi), REAL_C(0.5));
-}
-#endif
-
-/* A coordinate of a centre or a corner. */
-static inline centre_coord point_get(bvh_point c, int axis)
-{
-	return axis == 0 ? c.x : axis == 1 ? c.y : c.z;
-}
 
 /* The bounds of items[first .. first+count). */
 bvh_item_bounds bvh_items_bounds(int first, int count)
 {
-	bvh_item_bounds b;
-	int i;
-	points_empty(&b.lo, &b.hi);
-	points_empty(&b.clo, &b.chi);
-	for (i = 0; i < count; i++) {
-		const build_item *o = &items[first + i];
-		bvh_point centre = item_centre(o);
-		points_grow(&b.lo, &b.hi, &o->lo, &o->hi);
-		points_grow(&b.clo, &b.chi, &centre, &centre);
-	}
-	return b;
+	return items_bounds_of(&items[first], count);
 }
 
 /* How one axis's centres fall into `count` bins: from the lowest centre `lo` over
@@ -233,136 +163,7 @@ static inline void bins_of(const axis_bins bins[3], __m128 centre, int b[4])
 }
 #endif
 
-/* Nodes of at most this many objects (most of a tree's nodes) are split by sorting their
- * centres on each axis and pricing every plane between them: exact where binning is not,
- * and with few objects far cheaper than sweeping BINS bins on three axes, which made
- * nearly all of a small scene's build. Fixed point keeps its bins (no sorted split), so
- * that its tree, and its images at the edge of its range, stay as they were. */
-#define SORTED_MAX 16
 
-/* The cost of a split, relative to a leaf's of one intersection per object: a traversal
- * step plus each side's objects weighted by the chance that a ray entering the node
- * enters that side (its area relative to the node's). */
-static real split_cost(real2 left_area, int left, real2 right_area, int right, real2 node_area)
-{
-	return REAL_C(0.5) + real_mul(real2_ratio(left_area, node_area), real_from_int(left)) +
-	       real_mul(real2_ratio(right_area, node_area), real_from_int(right));
-}
-
-/* Whether a node stays a leaf: no plane parts its objects, or the best costs no less than
- * the leaf and the leaf is small enough. */
-static int leaf_is_better(int best_axis, real best_cost, int count)
-{
-	return best_axis < 0 || (best_cost >= real_from_int(count) && count <= MAX_LEAF);
-}
-
-#if BVH_WIDE
-/* sorted_split for two objects, without its sorts and sweeps: the same numbers compared
- * in the same order, so the same split (the trees of the SPD scenes and of 60,000 random
- * spheres hash the same). On each axis where their centres differ the one plane between
- * them is priced, the object with the lower centre on the left; the two orders add the
- * same two areas' terms in turn, which can round apart, so each is priced as its own.
- * Nodes of two are a third of a million spheres' splits, which took 440 processor cycles
- * each as sorted_split made them, mostly its loops' mispredicted exits. */
-static int pair_split(int first, const bvh_item_bounds *node, int *axis_out, bvh_item_bounds child[2])
-{
-	real2 node_area = box_half_area(bvh_point_vec(node->lo), bvh_point_vec(node->hi));
-	const build_item *a = &items[first], *b = &items[first + 1];
-	real2 area_a = box_half_area(bvh_point_vec(a->lo), bvh_point_vec(a->hi));
-	real2 area_b = box_half_area(bvh_point_vec(b->lo), bvh_point_vec(b->hi));
-	bvh_point centre_a = item_centre(a), centre_b = item_centre(b);
-	real cost[2], best_cost = REAL_MAX;
-	int best_axis = -1, b_first = 0, axis;
-	cost[0] = split_cost(area_a, 1, area_b, 1, node_area);
-	cost[1] = split_cost(area_b, 1, area_a, 1, node_area);
-	for (axis = 0; axis < 3; axis++) {
-		centre_coord ka = point_get(centre_a, axis), kb = point_get(centre_b, axis);
-		int swapped = kb < ka;
-		if (!(ka < kb) && !swapped)
-			continue; /* equal centres (or NaN): no plane */
-		if (cost[swapped] < best_cost) {
-			best_cost = cost[swapped];
-			best_axis = axis;
-			b_first = swapped;
-		}
-	}
-	if (leaf_is_better(best_axis, best_cost, 2))
-		return 0;
-	if (b_first) {
-		build_item swap = items[first];
-		items[first] = items[first + 1];
-		items[first + 1] = swap;
-	}
-	child[0] = bvh_items_bounds(first, 1);
-	child[1] = bvh_items_bounds(first + 1, 1);
-	*axis_out = best_axis;
-	return 1;
-}
-
-/* sah_split for a node of at most SORTED_MAX objects: the objects are sorted by centre
- * on each axis, every plane between two different centres is priced, and the objects
- * are put in the best axis's order with the first `left` going left. */
-static int sorted_split(int first, int count, const bvh_item_bounds *node, int *axis_out,
-			bvh_item_bounds child[2])
-{
-	real2 node_area = box_half_area(bvh_point_vec(node->lo), bvh_point_vec(node->hi));
-	int order[3][SORTED_MAX];
-	real best_cost = REAL_MAX;
-	int best_axis = -1, best_left = 0, axis, i, j;
-	build_item sorted[SORTED_MAX];
-	if (count < 2 || count > SORTED_MAX)
-		return 0; /* (never: sah_split sends only 2 .. SORTED_MAX) */
-	for (axis = 0; axis < 3; axis++) {
-		centre_coord key[SORTED_MAX] = {0}; /* (set before read; the lint cannot tell) */
-		real2 right_area[SORTED_MAX];
-		bvh_point run_lo, run_hi;
-		/* Insertion sort: stable, and at this size the quickest. */
-		for (i = 0; i < count; i++) {
-			centre_coord k = point_get(item_centre(&items[first + i]), axis);
-			for (j = i; j > 0 && key[j - 1] > k; j--) {
-				key[j] = key[j - 1];
-				order[axis][j] = order[axis][j - 1];
-			}
-			key[j] = k;
-			order[axis][j] = i;
-		}
-		points_empty(&run_lo, &run_hi);
-		for (i = count - 1; i > 0; i--) {
-			const build_item *o = &items[first + order[axis][i]];
-			points_grow(&run_lo, &run_hi, &o->lo, &o->hi);
-			right_area[i] = box_half_area(bvh_point_vec(run_lo), bvh_point_vec(run_hi));
-		}
-		points_empty(&run_lo, &run_hi);
-		for (i = 0; i < count - 1; i++) {
-			const build_item *o = &items[first + order[axis][i]];
-			real cost;
-			real2 left_area;
-			points_grow(&run_lo, &run_hi, &o->lo, &o->hi);
-			/* Equal centres stay together, as in a bin. */
-			if (!(key[i] < key[i + 1]))
-				continue;
-			left_area = box_half_area(bvh_point_vec(run_lo), bvh_point_vec(run_hi));
-			cost = split_cost(left_area, i + 1, right_area[i + 1], count - i - 1,
-					  node_area);
-			if (cost < best_cost) {
-				best_cost = cost;
-				best_axis = axis;
-				best_left = i + 1;
-			}
-		}
-	}
-	if (leaf_is_better(best_axis, best_cost, count))
-		return 0;
-	for (i = 0; i < count; i++)
-		sorted[i] = items[first + order[best_axis][i]];
-	for (i = 0; i < count; i++)
-		items[first + i] = sorted[i];
-	child[0] = bvh_items_bounds(first, best_left);
-	child[1] = bvh_items_bounds(first + best_left, count - best_left);
-	*axis_out = best_axis;
-	return best_left;
-}
-#endif
 
 /* Bins items[first .. first+count) on the three axes whose bins are `bins` (an axis of
  * extent 0 is left alone): each bin's count and the box of its items. */
@@ -496,8 +297,7 @@ static int sah_split(int first, int count, const bvh_item_bounds *node, int *axi
 	int bins_used = count > FINE_BINS_FROM ? FINE_BINS : BINS;
 #if BVH_WIDE
 	if (count <= SORTED_MAX)
-		return count == 2 ? pair_split(first, node, axis_out, child)
-				  : sorted_split(first, count, node, axis_out, child);
+		return bvh_small_split(&items[first], count, node, axis_out, child);
 #endif
 	for (axis = 0; axis < 3; axis++)
 		bins[axis] = axis_bins_make(node->clo, node->chi, axis, bins_used);
