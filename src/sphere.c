@@ -225,8 +225,20 @@ int sphere_intersect_from(const object *o, const ray *r, const origin_term *k, r
 		if (!REAL_FIXED && !h && discriminant >= 0 && !(o->flags & OBJ_INSIDE_ONLY) &&
 		    crossing_certain(s, b, c, tmin, tmax))
 			return 1;
-		if (!solve_quadratic(a, b, c, discriminant, &t0, &t1))
+		if (!REAL_FIXED && c < 0 && b < REAL_C(0.0) && a == REAL_C(1.0) &&
+		    tmin >= REAL_C(0.0)) {
+			/* From inside towards the centre (every ray traced inside glass from
+			 * its surface): the roots' product c < 0 puts the near one, c / q,
+			 * at or behind the origin, where the choice below never takes it, and
+			 * with a = 1 the far one is q itself. solve_quadratic's numbers
+			 * without its division. */
+			if (!(discriminant >= 0))
+				return 0;
+			t0 = REAL_C(0.0);
+			t1 = real_add(real2_sqrt(discriminant), -b);
+		} else if (!solve_quadratic(a, b, c, discriminant, &t0, &t1)) {
 			return 0;
+		}
 	}
 	/* The near root enters, the far root leaves; an inside-only sphere shows only exits. */
 	if (t0 > tmin && t0 < tmax && !(o->flags & OBJ_INSIDE_ONLY))
