@@ -30,6 +30,8 @@ RT_APART static vec3 bounded(vec3 c)
 /* Mirror weights stay below 1 so two facing mirrors still fade out. */
 #define MIRROR_MAX REAL_C(0.99609375) /* 255/256 */
 
+static real phong_power(real c, real n);
+
 void trace_init(tracer *t, const accel *a, int depth, real cutoff)
 {
 	const scene *s = accel_scene(a);
@@ -49,8 +51,14 @@ void trace_init(tracer *t, const accel *a, int depth, real cutoff)
 #if INSIDE_LISTS
 	t->inside = -1;
 #endif
-	for (i = 0; i < s->material_count; i++)
+	for (i = 0; i < s->material_count; i++) {
 		t->ambient[i] = bounded(vec_mul(s->ambient, s->materials[i].color));
+#if !REAL_FIXED
+		t->highlight_floor[i] = s->materials[i].ks > REAL_C(0.0)
+						? trace_highlight_floor(s->materials[i].shine)
+						: REAL_C(0.0);
+#endif
+	}
 	/* The eye may sit inside glass: find the closed transmitting objects around it by
 	 * asking whether a ray from the eye leaves each of them (an exit hit). */
 	t->eye_media.count = 0;
@@ -203,6 +211,49 @@ static real phong_power(real c, real n)
 	return whole ? result : real_pow(c, n);
 }
 
+#if !REAL_FIXED
+/* The least cosine c whose highlight c^n phong_power does not make 0, or 0: below it the
+ * highlight is 0 without the products (SPD mount's glass: c below 0.65, most of the
+ * cosines its highlights are asked for, each a dozen products and as many branches
+ * taken as the cosine says). Where phong_power squares (a whole exponent, or 16 or more),
+ * whether it gives 0 early only grows as c falls: each base and product is no larger for
+ * a smaller c (rounding keeps the order), and a step that falls below 2^-64 for c does
+ * so at that step or before for any smaller c, where it gives 0 too (the one exception,
+ * the last step's base, ends the loop for both). So halving the interval between a
+ * cosine that gives 0 and one that does not finds the least one exactly, to adjacent
+ * numbers of the type. pow's own path (a fraction below 16) keeps no floor, nor does
+ * an exponent below 1 (c^0 is 1). */
+real trace_highlight_floor(real shine)
+{
+	real zero = REAL_C(1.0) / REAL_C(36893488147419103232.0), lit = REAL_C(1.0), mid;
+	int i;
+	if (!(shine >= REAL_C(1.0) && shine <= REAL_C(4096.0)) ||
+	    (shine != real_from_int(real_to_int(shine)) && shine < REAL_C(16.0)))
+		return REAL_C(0.0);
+	/* 2^-65 gives 0 for every exponent of 1 or more: its first power is below the
+	 * cut-off. Halving reaches adjacent numbers within the mantissa's bits and the 64
+	 * binades between, well inside the 256 steps allowed. */
+	if (phong_power(zero, shine) != REAL_C(0.0) || phong_power(lit, shine) == REAL_C(0.0))
+		return REAL_C(0.0);
+	for (i = 0; i < 256; i++) {
+		mid = zero + (lit - zero) / 2;
+		if (!(mid > zero && mid < lit))
+			return lit;
+		if (phong_power(mid, shine) == REAL_C(0.0))
+			zero = mid;
+		else
+			lit = mid;
+	}
+	return REAL_C(0.0);
+}
+
+/* phong_power, for the tests. */
+real trace_highlight_power(real c, real shine)
+{
+	return phong_power(c, shine);
+}
+#endif
+
 /* Diffuse and highlight from every light the surface faces, through shadow rays. The
  * highlight's power is taken only for a light the shadow ray finds (a third of SPD
  * balls' lights are blocked), unless there is no diffuse light to send the ray for. The
@@ -239,6 +290,11 @@ static vec3 shade_lights(tracer *t, const ray *r, departure *from, const materia
 			cosine = real_max(dir_dot(h->shading, dir), UNIT_C(0.0));
 		diffuse = real_mul_unit(mat->kd, cosine);
 		shiny = mat->ks > REAL_C(0.0) && (c = dir_dot(mirror_dir, dir)) > UNIT_C(0.0);
+#if !REAL_FIXED
+		/* Below the floor the highlight is 0, as phong_power would make it. */
+		if (shiny && c < t->highlight_floor[s->objects[h->object].material])
+			shiny = 0;
+#endif
 		/* Without diffuse light only the highlight can show, and decides the shadow ray. */
 		if (!HIGHLIGHT_AFTER_SHADOW || !(diffuse > REAL_C(0.0))) {
 			if (shiny)

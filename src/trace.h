@@ -29,6 +29,10 @@ typedef struct {
 	int last_blocker[RT_MAX_DEPTH][RT_MAX_LIGHTS];
 	origin_terms eye; /* the objects' terms for rays from the camera */
 	vec3 ambient[RT_MAX_MATERIALS]; /* each material's ambient light, made once */
+#if !REAL_FIXED
+	/* Each material's least cosine whose highlight is not 0 (trace.c, highlight_floor). */
+	real highlight_floor[RT_MAX_MATERIALS];
+#endif
 #if EYE_COVER
 	eye_cover cover; /* the eye rays that meet nothing, known without a search */
 #endif
@@ -47,6 +51,14 @@ void trace_eye_line(tracer *t, dir3 n);
 /* Colour seen along an eye ray, from the camera (linear, not clamped). *hit_object gets
  * the index of the first object hit, or -1; it may be NULL. */
 vec3 trace_eye(tracer *t, const ray *r, int *hit_object);
+
+#if !REAL_FIXED
+/* A Phong highlight's power c^shine as the shading makes it (0 < c <= 1), and the least
+ * c for which it is not 0 (0 where no such floor is kept): below the floor the power is
+ * 0, at and above it not. */
+real trace_highlight_power(real c, real shine);
+real trace_highlight_floor(real shine);
+#endif
 
 /* The offset origin of a ray leaving the hit h on the side `side` points to: moved by
  * REAL_OFFSET times the scale of the hit point's rounding error (numerics.md section 2),
