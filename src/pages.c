@@ -43,6 +43,13 @@ static size_t to_boundary(const void *a, size_t unit)
 	return (size_t)(unit - (uintptr_t)a % unit) % unit;
 }
 
+/* madvise over the bytes from address `from` (a number: the pages around an array begin
+ * and end outside it, where C forms no pointer) for `bytes`. */
+static void advise(uintptr_t from, size_t bytes, int advice)
+{
+	(void)madvise((void *)from, bytes, advice);
+}
+
 void pages_plan(void *start, size_t bytes)
 {
 #ifdef MADV_HUGEPAGE
@@ -51,11 +58,10 @@ void pages_plan(void *start, size_t bytes)
 	 * exist (a huge page is only made where a fault finds none of its pages). So a
 	 * range is planned only well inside the static data: one in its first huge page
 	 * would round down into the program's other mappings and advise them too. */
-	unsigned char *from = (unsigned char *)start - (uintptr_t)start % HUGE_PAGE;
-	size_t span = (size_t)((unsigned char *)start - from) + bytes;
-	span += to_boundary(from + span, HUGE_PAGE);
+	size_t lead = (size_t)((uintptr_t)start % HUGE_PAGE), span = lead + bytes;
+	span += (HUGE_PAGE - span % HUGE_PAGE) % HUGE_PAGE;
 	if (bytes > 0 && bytes >= span / PAGES_HUGE_SHARE)
-		(void)madvise(from, span, MADV_HUGEPAGE);
+		advise((uintptr_t)start - lead, span, MADV_HUGEPAGE);
 #else
 	(void)start;
 	(void)bytes;
@@ -65,7 +71,6 @@ void pages_plan(void *start, size_t bytes)
 void pages_prepare(void *start, size_t bytes)
 {
 	static size_t page;
-	unsigned char *from = start;
 	size_t lead, huge_lead = to_boundary(start, HUGE_PAGE);
 	if (bytes == 0)
 		return;
@@ -77,13 +82,13 @@ void pages_prepare(void *start, size_t bytes)
 	/* The whole huge pages in the range, before their pages exist: a huge page is only
 	 * made for a range with none yet. */
 	if (bytes > huge_lead && bytes - huge_lead >= HUGE_PAGE)
-		(void)madvise(from + huge_lead, (bytes - huge_lead) / HUGE_PAGE * HUGE_PAGE,
-			      MADV_HUGEPAGE);
+		advise((uintptr_t)start + huge_lead, (bytes - huge_lead) / HUGE_PAGE * HUGE_PAGE,
+		       MADV_HUGEPAGE);
 #endif
 	/* Outwards to whole pages: a page that holds any byte of the range is part of the
 	 * same writable mapping, and preparing it writes nothing. */
 	lead = (size_t)((uintptr_t)start & (page - 1));
-	(void)madvise(from - lead, (lead + bytes + page - 1) & ~(page - 1), MADV_POPULATE_WRITE);
+	advise((uintptr_t)start - lead, (lead + bytes + page - 1) & ~(page - 1), MADV_POPULATE_WRITE);
 }
 
 void pages_ahead(void *array, size_t size, size_t first, size_t count, size_t capacity)
