@@ -225,7 +225,7 @@ static real phong_power(real c, real n)
  * an exponent below 1 (c^0 is 1). */
 real trace_highlight_floor(real shine)
 {
-	real zero = REAL_C(1.0) / REAL_C(36893488147419103232.0), lit = REAL_C(1.0), mid;
+	real zero = REAL_C(1.0) / REAL_C(36893488147419103232.0), lit = REAL_C(1.0);
 	int i;
 	if (!(shine >= REAL_C(1.0) && shine <= REAL_C(4096.0)) ||
 	    (shine != real_from_int(real_to_int(shine)) && shine < REAL_C(16.0)))
@@ -236,7 +236,7 @@ real trace_highlight_floor(real shine)
 	if (phong_power(zero, shine) != REAL_C(0.0) || phong_power(lit, shine) == REAL_C(0.0))
 		return REAL_C(0.0);
 	for (i = 0; i < 256; i++) {
-		mid = zero + (lit - zero) / 2;
+		real mid = zero + (lit - zero) / 2;
 		if (!(mid > zero && mid < lit))
 			return lit;
 		if (phong_power(mid, shine) == REAL_C(0.0))
