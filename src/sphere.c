@@ -227,11 +227,11 @@ int sphere_intersect_from(const object *o, const ray *r, const origin_term *k, r
 			return 1;
 		if (!REAL_FIXED && c < 0 && b < REAL_C(0.0) && a == REAL_C(1.0) &&
 		    tmin >= REAL_C(0.0)) {
-			/* From inside towards the centre (every ray traced inside glass from
-			 * its surface): the roots' product c < 0 puts the near one, c / q,
-			 * at or behind the origin, where the choice below never takes it, and
-			 * with a = 1 the far one is q itself. solve_quadratic's numbers
-			 * without its division. */
+			/* From inside towards the centre (a ray traced inside glass from its
+			 * surface, whenever its |d|^2 rounds to 1): the roots' product c < 0
+			 * puts the near one, c / q, at or behind the origin, where the choice
+			 * below never takes it, and with a = 1 the far one is q itself.
+			 * solve_quadratic's numbers without its division. */
 			if (!(discriminant >= 0))
 				return 0;
 			t0 = REAL_C(0.0);
