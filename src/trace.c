@@ -254,6 +254,14 @@ real trace_highlight_power(real c, real shine)
 }
 #endif
 
+/* The highlight a light gives at cosine c between its direction and the mirror ray's:
+ * ks c^shine (white, in the light's colour). Inlined at both of its uses in shade_lights,
+ * before the shadow ray or after it. */
+RT_INLINE real highlight_of(const material *mat, unit c)
+{
+	return real_mul(mat->ks, phong_power(unit_to_real(c), mat->shine));
+}
+
 /* Diffuse and highlight from every light the surface faces, through shadow rays. The
  * highlight's power is taken only for a light the shadow ray finds (a third of SPD
  * balls' lights are blocked), unless there is no diffuse light to send the ray for. The
@@ -298,7 +306,7 @@ static vec3 shade_lights(tracer *t, const ray *r, departure *from, const materia
 		/* Without diffuse light only the highlight can show, and decides the shadow ray. */
 		if (!HIGHLIGHT_AFTER_SHADOW || !(diffuse > REAL_C(0.0))) {
 			if (shiny)
-				highlight = real_mul(mat->ks, phong_power(unit_to_real(c), mat->shine));
+				highlight = highlight_of(mat, c);
 			shiny = 0;
 			if (!(diffuse > REAL_C(0.0)) && !(highlight > REAL_C(0.0)))
 				continue;
@@ -332,7 +340,7 @@ static vec3 shade_lights(tracer *t, const ray *r, departure *from, const materia
 				continue;
 		}
 		if (shiny)
-			highlight = real_mul(mat->ks, phong_power(unit_to_real(c), mat->shine));
+			highlight = highlight_of(mat, c);
 		/* The light's full contribution: diffuse in the surface colour, white highlight,
 		 * in the light's colour (a white light's products would change nothing). */
 		lit = vec_madd(vec_make(highlight, highlight, highlight), diffuse, mat->color);
