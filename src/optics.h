@@ -1,4 +1,5 @@
-/* optics.h - reflection, Snell refraction, dielectric Fresnel and Beer-Lambert.
+/* optics.h - reflection, Snell refraction, dielectric Fresnel, Beer-Lambert and the Phong
+ * highlight's power.
  * See LICENSE for copyright and licence. */
 #ifndef RT_OPTICS_H
 #define RT_OPTICS_H
@@ -22,5 +23,15 @@ real optics_fresnel(unit cosine, real eta);
 /* Beer-Lambert transmittance e^(-a d); d < 0 counts as 0 (numerics.md B05) and results
  * below 1e-30 are flushed to 0 so float never goes subnormal (B03). */
 real optics_beer(real absorb, real distance);
+
+/* A Phong highlight's power c^n (0 < c <= 1, n the material's shine), by squaring for
+ * the exponents scenes write, 0 once below 2^-64. */
+real optics_highlight(real c, real n);
+
+#if !REAL_FIXED
+/* The least c for which optics_highlight(c, shine) is not 0, or 0 where no such floor is
+ * kept: below the floor the power is 0, at and above it not. */
+real optics_highlight_floor(real shine);
+#endif
 
 #endif

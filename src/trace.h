@@ -52,14 +52,6 @@ void trace_eye_line(tracer *t, dir3 n);
  * the index of the first object hit, or -1; it may be NULL. */
 vec3 trace_eye(tracer *t, const ray *r, int *hit_object);
 
-#if !REAL_FIXED
-/* A Phong highlight's power c^shine as the shading makes it (0 < c <= 1), and the least
- * c for which it is not 0 (0 where no such floor is kept): below the floor the power is
- * 0, at and above it not. */
-real trace_highlight_power(real c, real shine);
-real trace_highlight_floor(real shine);
-#endif
-
 /* The offset origin of a ray leaving the hit h on the side `side` points to: moved by
  * REAL_OFFSET times the scale of the hit point's rounding error (numerics.md section 2),
  * in fixed point by the larger offset when the hit is rough (tolerance.h). */

@@ -12,7 +12,6 @@
 #include "shape.h"
 #include "support.h"
 #include "test.h"
-#include "trace.h"
 
 #define GLASS REAL_C(1.5)
 #define WATER REAL_C(1.33)
@@ -335,7 +334,7 @@ static void test_reflect(void)
 }
 
 #if !REAL_FIXED
-/* A highlight's floor (trace.c) is exact: the power is 0 below it and not at it, for
+/* A highlight's floor (optics.c) is exact: the power is 0 below it and not at it, for
  * whole exponents and fractions of 16 or more, and no floor is kept for pow's fractions
  * below 16 or an exponent below 1. Cosines at random over the binades from 2^-70 to 1,
  * and just either side of each floor: every one agrees with the power itself. */
@@ -346,7 +345,7 @@ static void test_highlight_floor(void)
 	int i, j, disagree = 0, floors = 0;
 	for (i = 0; i < (int)(sizeof shines / sizeof shines[0]); i++) {
 		real n = (real)shines[i];
-		real floor = trace_highlight_floor(n);
+		real floor = optics_highlight_floor(n);
 		int kept = n >= REAL_C(1.0) && n <= REAL_C(4096.0) &&
 			   (n == (real)(long)n || n >= REAL_C(16.0));
 		CHECK(kept ? floor > REAL_C(0.0) : floor == REAL_C(0.0));
@@ -354,15 +353,15 @@ static void test_highlight_floor(void)
 			continue;
 		floors++;
 		/* At the floor the power is not 0; one step below, it is. */
-		CHECK(trace_highlight_power(floor, n) != REAL_C(0.0));
-		CHECK(trace_highlight_power(floor - floor * REAL_EPSILON, n) == REAL_C(0.0));
+		CHECK(optics_highlight(floor, n) != REAL_C(0.0));
+		CHECK(optics_highlight(floor - floor * REAL_EPSILON, n) == REAL_C(0.0));
 		for (j = 0; j < 20000; j++) {
 			real c = (real)exp2(test_random_range(-70.0, 0.0));
 			if (j % 4 == 0) /* within a few hundred steps of the floor */
 				c = floor + floor * REAL_EPSILON * (real)test_random_range(-300.0, 300.0);
 			if (!(c > REAL_C(0.0) && c <= REAL_C(1.0)))
 				continue;
-			disagree += (c < floor) != (trace_highlight_power(c, n) == REAL_C(0.0));
+			disagree += (c < floor) != (optics_highlight(c, n) == REAL_C(0.0));
 		}
 	}
 	CHECK_INT(floors, 13);
