@@ -38,9 +38,9 @@
 #define PAGES_HUGE_SHARE 8
 
 /* How many bytes from address a up to the next multiple of unit (0 when a is one). */
-static size_t to_boundary(const void *a, size_t unit)
+static size_t to_boundary(uintptr_t a, size_t unit)
 {
-	return (size_t)(unit - (uintptr_t)a % unit) % unit;
+	return (size_t)(unit - a % unit) % unit;
 }
 
 /* madvise over the bytes from address `from` (a number: the pages around an array begin
@@ -61,7 +61,7 @@ void pages_plan(void *start, size_t bytes)
 	 * range is planned only well inside the static data: one in its first huge page
 	 * would round down into the program's other mappings and advise them too. */
 	size_t lead = (size_t)((uintptr_t)start % HUGE_PAGE), span = lead + bytes;
-	span += (HUGE_PAGE - span % HUGE_PAGE) % HUGE_PAGE;
+	span += to_boundary(span, HUGE_PAGE); /* from a huge page's start, as the span is */
 	if (bytes > 0 && bytes >= span / PAGES_HUGE_SHARE)
 		advise((uintptr_t)start - lead, span, MADV_HUGEPAGE);
 #else
@@ -73,7 +73,7 @@ void pages_plan(void *start, size_t bytes)
 void pages_prepare(void *start, size_t bytes)
 {
 	static size_t page;
-	size_t lead, huge_lead = to_boundary(start, HUGE_PAGE);
+	size_t lead, huge_lead = to_boundary((uintptr_t)start, HUGE_PAGE);
 	if (bytes == 0)
 		return;
 	if (!page) {
@@ -110,7 +110,7 @@ void pages_ahead(void *array, size_t size, size_t first, size_t count, size_t ca
 	 * huge page after it is then fresh when a chunk first enters it (the chunks that
 	 * follow within it ask again for pages that are there, which costs little). */
 	if (from * per * size >= HUGE_PAGE) {
-		size_t past = to_boundary(stop, HUGE_PAGE);
+		size_t past = to_boundary((uintptr_t)stop, HUGE_PAGE);
 		stop = past < (size_t)(limit - stop) ? stop + past : limit;
 	}
 	pages_prepare(start, (size_t)(stop - start));

@@ -30,7 +30,6 @@ RT_APART static vec3 bounded(vec3 c)
 /* Mirror weights stay below 1 so two facing mirrors still fade out. */
 #define MIRROR_MAX REAL_C(0.99609375) /* 255/256 */
 
-
 void trace_init(tracer *t, const accel *a, int depth, real cutoff)
 {
 	const scene *s = accel_scene(a);

@@ -30,7 +30,7 @@ typedef struct {
 	origin_terms eye; /* the objects' terms for rays from the camera */
 	vec3 ambient[RT_MAX_MATERIALS]; /* each material's ambient light, made once */
 #if !REAL_FIXED
-	/* Each material's least cosine whose highlight is not 0 (trace.c, highlight_floor). */
+	/* Each material's least cosine whose highlight is not 0 (optics_highlight_floor). */
 	real highlight_floor[RT_MAX_MATERIALS];
 #endif
 #if EYE_COVER
