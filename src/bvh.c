@@ -60,23 +60,32 @@ static int *radix_sort(int *a, int *spare, int n)
  * objects' order, as the object-by-object search takes it: a product of three or more
  * rounds by its order, which the tree's would not keep. A few are sorted in place, more
  * by radix sort. */
-static real transmittance_in_order(const scene *s, crossing *c)
+static real product_of(const scene *s, const int *list, int n)
 {
-	int *list = c->index, n = c->count, i;
 	real pass = REAL_C(1.0);
-	if (n > BVH_CROSSED) {
-		list = radix_sort(crossed_beyond, crossed_spare, n);
-	} else {
-		for (i = 1; i < n; i++) {
-			int o = list[i], j;
-			for (j = i; j > 0 && list[j - 1] > o; j--)
-				list[j] = list[j - 1];
-			list[j] = o;
-		}
-	}
+	int i;
 	for (i = 0; i < n; i++)
 		pass = real_mul(pass, s->materials[s->objects[list[i]].material].kt);
 	return pass;
+}
+
+real bvh_pass_in_order(const scene *s, int *list, int n)
+{
+	int i;
+	for (i = 1; i < n; i++) {
+		int o = list[i], j;
+		for (j = i; j > 0 && list[j - 1] > o; j--)
+			list[j] = list[j - 1];
+		list[j] = o;
+	}
+	return product_of(s, list, n);
+}
+
+static real transmittance_in_order(const scene *s, crossing *c)
+{
+	if (c->count > BVH_CROSSED)
+		return product_of(s, radix_sort(crossed_beyond, crossed_spare, c->count), c->count);
+	return bvh_pass_in_order(s, c->index, c->count);
 }
 
 /* The search is built into one function for each query, the query a constant in each:
@@ -151,3 +160,64 @@ real bvh_transmittance(const scene *s, const bvh_tree *t, const ray *r, int skip
 #endif
 	return transmittance(s, t, r, skip, tmax, blocker);
 }
+
+#if BVH_WIDE
+/* Adds object o to objects[0 .. *count) unless it is `skip`, listed already (a long
+ * cone's pieces are in several leaves), or of one piece with a box the region misses (a
+ * cone's piece is known by its leaf's box alone, which holds it). Returns 0 when the list
+ * would pass `room`. */
+static int list_object(const scene *s, bvh_region_test *meets, const void *region, int skip,
+		       int o, int *objects, int room, int *count)
+{
+	bvh_point lo, hi;
+	int k;
+	for (k = 0; k < *count && objects[k] != o; k++)
+		;
+	if (o == skip || k < *count)
+		return 1;
+	if (bvh_object_pieces(s, o) == 1 && bvh_object_box(s, o, &lo, &hi) &&
+	    !meets(region, lo, hi))
+		return 1;
+	if (*count == room)
+		return 0;
+	objects[(*count)++] = o;
+	return 1;
+}
+
+int bvh_objects_meeting(const scene *s, const bvh_tree *t, bvh_region_test *meets,
+			const void *region, int skip, int *objects, int room, long lanes,
+			int *count)
+{
+	int stack[(WIDE_LANES - 1) * (BVH_MAX_DEPTH + 1) + 2], top = 1;
+	*count = 0;
+	stack[0] = 0; /* the root */
+	while (top > 0) {
+		const bvh_wide_node *w = &t->wide[stack[--top]];
+		int lane, i;
+		for (lane = 0; lane < WIDE_LANES && w->child[lane] >= 0; lane++) {
+			int child = w->child[lane], n = w->count[lane];
+			bvh_point box[2];
+			if (--lanes < 0)
+				return 0;
+			bvh_lane_box(w, lane, box);
+			if (!meets(region, box[0], box[1]))
+				continue;
+			if (!n) {
+				stack[top++] = child;
+				continue;
+			}
+			if (n == WIDE_ONE_OBJECT) {
+				if (!list_object(s, meets, region, skip, child, objects, room,
+						 count))
+					return 0;
+				continue;
+			}
+			for (i = child; i < child + n; i++)
+				if (!list_object(s, meets, region, skip, t->index[i], objects, room,
+						 count))
+					return 0;
+		}
+	}
+	return 1;
+}
+#endif

@@ -188,4 +188,23 @@ int bvh_nearest(const scene *s, const bvh_tree *t, const ray *r, int skip, real 
 #define BVH_CROSSED 16
 real bvh_transmittance(const scene *s, const bvh_tree *t, const ray *r, int skip, real tmax,
 		       int *blocker);
+
+/* The product of the kt of the transmitting objects list[0 .. n), in the objects' order as
+ * bvh_transmittance takes it; sorts the list (by insertion: for a few). */
+real bvh_pass_in_order(const scene *s, int *list, int n);
+
+#if BVH_WIDE
+/* Whether a region meets the box [lo, hi] (a tree's corners, or an object's as the tree
+ * pads them). */
+typedef int bvh_region_test(const void *region, bvh_point lo, bvh_point hi);
+
+/* Lists in objects[0 .. *count) the objects other than `skip` whose boxes meet a region,
+ * each once: through the wide tree, each leaf lane's objects by their own boxes (a long
+ * cone cut in pieces, bvh_pieces.c, by the lane's box, which holds its piece's). Returns
+ * 0 when they are more than `room`, or when finding them takes more than `lanes` of the
+ * tree's lanes. */
+int bvh_objects_meeting(const scene *s, const bvh_tree *t, bvh_region_test *meets,
+			const void *region, int skip, int *objects, int room, long lanes,
+			int *count);
+#endif
 #endif

@@ -6,6 +6,8 @@
 #include "box.h"
 #include "intersect.h"
 
+#include <limits.h>
+
 #if INSIDE_LISTS
 
 /* Whether the boxes [alo, ahi] and [blo, bhi] share a point (faces included). */
@@ -16,69 +18,25 @@ static int boxes_meet(const bvh_point *alo, const bvh_point *ahi, const bvh_poin
 	       alo->z <= bhi->z && blo->z <= ahi->z;
 }
 
-/* Adds object o, of a leaf whose box is [lo, hi], to list l of `solid`'s overlaps unless
- * it is the solid, already listed (a long cone's pieces are in several leaves), or of one
- * piece and with a box that does not meet [reach_lo, reach_hi] (a cone's piece is known
- * by its leaf's box alone, which holds it). Returns 0 when the list is full. */
-static int list_object(inside_list *l, const scene *s, int solid, int o,
-		       const bvh_point *reach_lo, const bvh_point *reach_hi)
+/* Whether the box [lo, hi] meets the box `region` (two corners), faces included. */
+static int meets_box(const void *region, bvh_point lo, bvh_point hi)
 {
-	bvh_point lo, hi;
-	int k;
-	for (k = 0; k < l->count && l->objects[k] != o; k++)
-		;
-	if (o == solid || k < l->count)
-		return 1;
-	if (bvh_object_pieces(s, o) == 1 && bvh_object_box(s, o, &lo, &hi) &&
-	    !boxes_meet(&lo, &hi, reach_lo, reach_hi))
-		return 1;
-	if (l->count == INSIDE_MAX)
-		return 0;
-	l->objects[l->count++] = o;
-	return 1;
+	const bvh_point *reach = (const bvh_point *)region;
+	return boxes_meet(&lo, &hi, &reach[0], &reach[1]);
 }
 
 /* Lists in l the objects other than `solid` whose boxes in the tree meet l's box grown by
- * its padding: through the wide tree, each leaf lane's objects by their own boxes (a long
- * cone cut in pieces, bvh_pieces.c, by the lane's box, which holds its piece's). Returns
- * 0 when they are more than INSIDE_MAX. */
+ * its padding. Returns 0 when they are more than INSIDE_MAX. */
 static int list_overlaps(inside_list *l, const scene *s, const bvh_tree *t, int solid)
 {
-	int stack[(WIDE_LANES - 1) * (BVH_MAX_DEPTH + 1) + 2], top = 1;
-	bvh_point reach_lo, reach_hi;
-	{
-		vec3 lo = bvh_point_vec(l->lo), hi = bvh_point_vec(l->hi);
-		real pad = box_rounding_pad(lo, hi);
-		vec3 grow = vec_make(pad, pad, pad);
-		reach_lo = bvh_round_corner(vec_sub(lo, grow), 0);
-		reach_hi = bvh_round_corner(vec_add(hi, grow), 1);
-	}
-	l->count = 0;
-	stack[0] = 0; /* the root */
-	while (top > 0) {
-		const bvh_wide_node *w = &t->wide[stack[--top]];
-		int lane, i;
-		for (lane = 0; lane < WIDE_LANES && w->child[lane] >= 0; lane++) {
-			int child = w->child[lane], count = w->count[lane];
-			bvh_point box[2];
-			bvh_lane_box(w, lane, box);
-			if (!boxes_meet(&box[0], &box[1], &reach_lo, &reach_hi))
-				continue;
-			if (!count) {
-				stack[top++] = child;
-				continue;
-			}
-			if (count == WIDE_ONE_OBJECT) {
-				if (!list_object(l, s, solid, child, &reach_lo, &reach_hi))
-					return 0;
-				continue;
-			}
-			for (i = child; i < child + count; i++)
-				if (!list_object(l, s, solid, t->index[i], &reach_lo, &reach_hi))
-					return 0;
-		}
-	}
-	return 1;
+	bvh_point reach[2];
+	vec3 lo = bvh_point_vec(l->lo), hi = bvh_point_vec(l->hi);
+	real pad = box_rounding_pad(lo, hi);
+	vec3 grow = vec_make(pad, pad, pad);
+	reach[0] = bvh_round_corner(vec_sub(lo, grow), 0);
+	reach[1] = bvh_round_corner(vec_add(hi, grow), 1);
+	return bvh_objects_meeting(s, t, meets_box, reach, solid, l->objects, INSIDE_MAX, LONG_MAX,
+				   &l->count);
 }
 
 /* Where listed object o lies, seen from the centre of its solid's box [lo, hi]: the

@@ -125,6 +125,7 @@ const accel *accel_build(const scene *s)
 	bvh_build(&the_accel.tree, s);
 #if INSIDE_LISTS
 	inside_build(&the_accel.inside, s, &the_accel.tree);
+	shadow_lists_build(&the_accel.shadow, s, &the_accel.tree, &the_accel.inside);
 #endif
 	return &the_accel;
 }

@@ -8,6 +8,7 @@
 
 #include "bvh.h"
 #include "inside.h"
+#include "shadow_list.h"
 #include "shape.h"
 
 /* What the queries below search: the scene, and where the build has one its BVH, built
@@ -19,6 +20,7 @@ typedef struct {
 	bvh_tree tree;
 #if INSIDE_LISTS
 	inside_lists inside; /* the objects rays inside each transmitting solid can meet */
+	shadow_lists shadow; /* and its shadow rays can cross on the way to each light */
 #endif
 } accel;
 #define accel_scene(a) ((a)->scene)

@@ -185,6 +185,30 @@ RT_INLINE real highlight_of(const material *mat, unit c)
 	return real_mul(mat->ks, optics_highlight(unit_to_real(c), mat->shine));
 }
 
+/* The light a shadow ray from a hit on object `from` (of material `mat`) towards light
+ * `lamp` passes (*blocker the opaque blocker, or -1): through the object's list where it
+ * has one (shadow_list.h: transmitting solids only, and only they look), else through the
+ * scene. */
+RT_INLINE real shadow_pass(tracer *t, int from, const material *mat, int lamp, const ray *r,
+			   real tmax, int skip, int *blocker)
+{
+#if SHADOW_LISTS
+	if (mat->kt > REAL_C(0.0)) {
+		const accel *a = t->accel;
+		const shadow_list *list =
+			shadow_lists_find(&a->shadow, accel_scene(a), &a->inside, from, lamp);
+		real pass;
+		if (list && shadow_list_pass(list, accel_scene(a), r, tmax, skip, &pass, blocker))
+			return pass;
+	}
+#else
+	(void)from;
+	(void)mat;
+	(void)lamp;
+#endif
+	return scene_transmittance(t->accel, r, tmax, skip, blocker);
+}
+
 /* Diffuse and highlight from every light the surface faces, through shadow rays. The
  * highlight's power is taken only for a light the shadow ray finds (a third of SPD
  * balls' lights are blocked), unless there is no diffuse light to send the ray for. The
@@ -258,7 +282,8 @@ static vec3 shade_lights(tracer *t, const ray *r, departure *from, const materia
 			if (*cached >= 0 && *cached != from->skip &&
 			    object_intersect(s, *cached, &shadow, REAL_C(0.0), distance, NULL))
 				continue;
-			pass = scene_transmittance(t->accel, &shadow, distance, from->skip, cached);
+			pass = shadow_pass(t, h->object, mat, i, &shadow, distance, from->skip,
+					   cached);
 			if (pass <= REAL_C(0.0))
 				continue;
 		}

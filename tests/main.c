@@ -95,7 +95,7 @@ int main(int argc, char **argv)
 		{"cone", suite_cone},             {"optics", suite_optics}, {"properties", suite_properties},
 		{"parse", suite_parse},           {"image", suite_image},   {"output", suite_output}, {"deflate", suite_deflate},
 		{"fixed", suite_fixed},           {"camera", suite_camera}, {"bvh", suite_bvh},
-		{"eye_cover", suite_eye_cover},
+		{"eye_cover", suite_eye_cover},   {"shadow_list", suite_shadow_list},
 		{"clearance", suite_clearance},   {"pages", suite_pages},
 	};
 	size_t i;

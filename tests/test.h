@@ -179,6 +179,7 @@ void suite_deflate(void);
 void suite_camera(void);
 void suite_bvh(void);
 void suite_eye_cover(void);
+void suite_shadow_list(void);
 void suite_clearance(void);
 void suite_pages(void);
 void suite_fixed(void);
