@@ -43,6 +43,9 @@ typedef struct {
 	real radius;
 	real2 radius2; /* squared: real2, which fixed point keeps in 64 bits */
 	real_reciprocal per_radius; /* for dividing by the radius (fixed point's normals) */
+#if !REAL_FIXED
+	real inverse_radius; /* 1 / radius, rounded: floating types' normals */
+#endif
 } sphere_shape;
 
 /* Floating-point types decide most rays at a convex polygon by the hit point's distances

@@ -286,6 +286,68 @@ static void test_sphere_contract(void)
 	CHECK_REAL(h.point.y, 0.5, 0.0);
 }
 
+#if !REAL_FIXED
+/* A sphere's normal in the floating types, (p - c) times 1 / r or, where that is not unit
+ * length to 16 epsilon, normalised: at every scale, and for spheres from as large as their
+ * distance from the origin down to 10^-4 of it (where the product is off and the normal is
+ * normalised), the normal is unit to 18 epsilon and points from the centre to the hit
+ * point to 10 epsilon, measured in long double. */
+static void test_normals(void)
+{
+	int i, k, hits = 0, normalised = 0, far_off = 0, off_unit = 0;
+	test_seed(47);
+	for (i = 0; i < 20000; i++) {
+		double scale = pow(10.0, test_random_range(-3.0, 5.0)), c[3], o[3], aim[3], radius;
+		long double out[3], length2 = 0.0L, product2 = 0.0L, n2 = 0.0L, away = 0.0L;
+		object sphere;
+		hit h;
+		ray r;
+		radius = scale * pow(10.0, test_random_range(-4.0, 0.0));
+		for (k = 0; k < 3; k++)
+			c[k] = scale * test_random_range(-1.0, 1.0);
+		/* From 3 to 10 radii off, towards a point within half a radius of the centre. */
+		for (k = 0; k < 3; k++)
+			o[k] = c[k] + radius * test_random_range(-10.0, 10.0);
+		o[2] = c[2] + radius * (3.0 + test_random_range(0.0, 7.0));
+		sphere = make_sphere(vec_make(test_real(c[0]), test_real(c[1]), test_real(c[2])),
+				     test_real(radius), OBJ_TWO_SIDED);
+		for (k = 0; k < 3; k++)
+			aim[k] = c[k] + radius * 0.5 * test_random_range(-1.0, 1.0) - o[k];
+		r = test_ray(vec_make(test_real(o[0]), test_real(o[1]), test_real(o[2])),
+			     vec_make(test_real(aim[0]), test_real(aim[1]), test_real(aim[2])));
+		if (!sphere_intersect(&sphere, &r, REAL_C(0.0), REAL_MAX, &h))
+			continue;
+		hits++;
+		out[0] = (long double)h.point.x - (long double)sphere.u.sphere.center.x;
+		out[1] = (long double)h.point.y - (long double)sphere.u.sphere.center.y;
+		out[2] = (long double)h.point.z - (long double)sphere.u.sphere.center.z;
+		for (k = 0; k < 3; k++) {
+			long double p = out[k] * (long double)sphere.u.sphere.inverse_radius;
+			length2 += out[k] * out[k];
+			product2 += p * p;
+		}
+		/* Where the product is off by more than 16 epsilon, the normal is normalised. */
+		normalised += fabsl(product2 - 1.0L) > 15.0L * (long double)REAL_EPSILON;
+		for (k = 0; k < 3; k++) {
+			long double n = (long double)(k == 0 ? h.normal.x : k == 1 ? h.normal.y
+									: h.normal.z);
+			long double u = out[k] / sqrtl(length2);
+			n2 += n * n;
+			away = fmaxl(away, fabsl(n - u));
+		}
+		/* Kept, the product's squared length is within 16 epsilon of 1 as computed
+		 * (and 2 more exactly); its length then within 8.5, and each component's two
+		 * roundings add one. */
+		off_unit += !(fabsl(n2 - 1.0L) <= 18.0L * (long double)REAL_EPSILON);
+		far_off += !(away <= 10.0L * (long double)REAL_EPSILON);
+	}
+	CHECK(hits > 15000);
+	CHECK(normalised > 1000 && normalised < hits - 1000);
+	CHECK_INT(off_unit, 0);
+	CHECK_INT(far_off, 0);
+}
+#endif
+
 /* Scenes whose dynamic range Q16.16 cannot hold are refused when they are loaded, with a
  * message naming their extent and smallest feature; floating point takes them. */
 static char refusal[256];
@@ -611,5 +673,6 @@ void suite_sphere(void)
 	test_coarse_miss();
 #else
 	test_shadow_crossings();
+	test_normals();
 #endif
 }
