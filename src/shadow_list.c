@@ -13,7 +13,7 @@
 #define SHADOW_SLACK (REAL_C(4096.0) * REAL_EPSILON)
 
 /* Narrows [*low, *high] to the s with start + s slope <= bound; 0 when no s has it. A NaN
- * (which no box of the tree's holds) narrows nothing: the hull test errs towards a meeting. */
+ * quotient narrows nothing (the corners compared are finite, so none arises). */
 static int bound_s(real start, real slope, real bound, real *low, real *high)
 {
 	if (slope > REAL_C(0.0))
