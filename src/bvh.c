@@ -56,10 +56,7 @@ static int *radix_sort(int *a, int *spare, int n)
 	return a;
 }
 
-/* The product of the kt of the transmitting objects a shadow search crossed, in the
- * objects' order, as the object-by-object search takes it: a product of three or more
- * rounds by its order, which the tree's would not keep. A few are sorted in place, more
- * by radix sort. */
+/* The product of the kt of the objects list[0 .. n), in the list's order. */
 static real product_of(const scene *s, const int *list, int n)
 {
 	real pass = REAL_C(1.0);
@@ -81,6 +78,10 @@ real bvh_pass_in_order(const scene *s, int *list, int n)
 	return product_of(s, list, n);
 }
 
+/* The product of the kt of the transmitting objects a shadow search crossed, in the
+ * objects' order, as the object-by-object search takes it: a product of three or more
+ * rounds by its order, which the tree's would not keep. A few are sorted in place, more
+ * by radix sort. */
 static real transmittance_in_order(const scene *s, crossing *c)
 {
 	if (c->count > BVH_CROSSED)

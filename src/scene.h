@@ -42,9 +42,12 @@ typedef struct {
 	vec3 center;
 	real radius;
 	real2 radius2; /* squared: real2, which fixed point keeps in 64 bits */
-	real_reciprocal per_radius; /* for dividing by the radius (fixed point's normals) */
-#if !REAL_FIXED
-	real inverse_radius; /* 1 / radius, rounded: floating types' normals */
+	/* What the normal is divided by the radius through (sphere.c): fixed point's
+	 * reciprocal, or 1 / radius rounded in the floating types. */
+#if REAL_FIXED
+	real_reciprocal per_radius;
+#else
+	real inverse_radius;
 #endif
 } sphere_shape;
 

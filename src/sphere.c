@@ -12,10 +12,11 @@ void sphere_init(sphere_shape *s, vec3 center, real radius)
 	s->center = center;
 	s->radius = radius;
 	s->radius2 = real_mul2(radius, radius);
-	/* Fixed point: from r^2 (Newton, good to 2^-29), so that no division kernel is
-	 * linked for it alone. */
-	s->per_radius = REAL_FIXED ? real2_reciprocal_sqrt(s->radius2) : real_reciprocal_of(radius);
-#if !REAL_FIXED
+#if REAL_FIXED
+	/* From r^2 (Newton, good to 2^-29), so that no division kernel is linked for it
+	 * alone. */
+	s->per_radius = real2_reciprocal_sqrt(s->radius2);
+#else
 	s->inverse_radius = REAL_C(1.0) / radius;
 #endif
 }
